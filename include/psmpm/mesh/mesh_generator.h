@@ -1,0 +1,84 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_mesh_mesh_generator_h
+#define psmpm_mesh_mesh_generator_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria.h>
+
+#include <map>
+#include <string>
+
+namespace psmpm
+{
+  namespace Mesh
+  {
+    using namespace dealii;
+
+    /**
+     * Creates the 2D triangle mesh of a scene from the subsections
+     * "Geometry" and "Mesh": rectangles of Blocks x by Blocks y blocks,
+     * each split into four triangles around its centre ("criss-cross",
+     * thesis Fig. 4.2) or into two ("diagonal"), or a Gmsh file.
+     * Rectangle boundaries get the ids of left, right, bottom, top
+     * (0, 1, 2, 3); Gmsh physical line tags become boundary ids and their
+     * physical names become boundary names.
+     */
+    class MeshGenerator
+    {
+    public:
+      enum class Type
+      {
+        criss_cross,
+        diagonal,
+        gmsh
+      };
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /// Throws ExcMessage naming the entry for invalid values.
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// Fill the (empty) triangulation @p tria.
+      void
+      create(Triangulation<2> &tria) const;
+
+      /// Map from boundary name to boundary id for the created mesh.
+      const std::map<std::string, types::boundary_id> &
+      boundary_names() const;
+
+      /// Id of the boundary called @p name; throws if there is none.
+      types::boundary_id
+      boundary_id(const std::string &name) const;
+
+      /// A rectangle [lower, upper] of nx by ny blocks split as @p type.
+      static void
+      make_blocks(Triangulation<2> &tria,
+                  const Point<2> &  lower,
+                  const Point<2> &  upper,
+                  const unsigned int nx,
+                  const unsigned int ny,
+                  const Type         type);
+
+      /// Read a Gmsh .msh file; returns the physical names found in it.
+      static std::map<std::string, types::boundary_id>
+      read_gmsh(Triangulation<2> &tria, const std::string &filename);
+
+      Type         type    = Type::criss_cross;
+      double       length  = 1.0;
+      double       height  = 1.0;
+      unsigned int blocks_x = 1;
+      unsigned int blocks_y = 1;
+      std::string  file;
+
+    private:
+      mutable std::map<std::string, types::boundary_id> names;
+    };
+  } // namespace Mesh
+} // namespace psmpm
+
+#endif

@@ -1,0 +1,264 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <psmpm/mesh/mesh_generator.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace psmpm
+{
+  namespace Mesh
+  {
+    void
+    MeshGenerator::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        prm.declare_entry("Length",
+                          "25",
+                          Patterns::Double(),
+                          "Length (x extent) of the rectangular domain [m].");
+        prm.declare_entry("Height",
+                          "2",
+                          Patterns::Double(),
+                          "Height (y extent) of the rectangular domain [m].");
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Mesh");
+      {
+        prm.declare_entry(
+          "Type",
+          "criss-cross",
+          Patterns::Selection("criss-cross|diagonal|gmsh"),
+          "criss-cross: each block split into 4 triangles around its "
+          "centre; diagonal: each block split into 2 triangles; gmsh: read "
+          "'File'.");
+        prm.declare_entry("Blocks x",
+                          "4",
+                          Patterns::Integer(1),
+                          "Number of blocks in x direction.");
+        prm.declare_entry("Blocks y",
+                          "1",
+                          Patterns::Integer(1),
+                          "Number of blocks in y direction.");
+        prm.declare_entry("File",
+                          "",
+                          Patterns::Anything(),
+                          "Gmsh .msh file (Type = gmsh); relative paths are "
+                          "taken relative to the parameter file.");
+      }
+      prm.leave_subsection();
+    }
+
+    void
+    MeshGenerator::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      length = prm.get_double("Length");
+      height = prm.get_double("Height");
+      prm.leave_subsection();
+      prm.enter_subsection("Mesh");
+      const std::string t = prm.get("Type");
+      type     = (t == "criss-cross" ? Type::criss_cross :
+                  t == "diagonal"    ? Type::diagonal :
+                                       Type::gmsh);
+      blocks_x = prm.get_integer("Blocks x");
+      blocks_y = prm.get_integer("Blocks y");
+      file     = prm.get("File");
+      prm.leave_subsection();
+
+      AssertThrow(type == Type::gmsh || (length > 0 && height > 0),
+                  ExcMessage("Geometry/Length and Geometry/Height must be "
+                             "positive, got " +
+                             std::to_string(length) + " and " +
+                             std::to_string(height) + "."));
+      if (type == Type::gmsh)
+        {
+          AssertThrow(!file.empty(),
+                      ExcMessage("Mesh/File must name a .msh file when "
+                                 "Mesh/Type = gmsh."));
+          std::ifstream in(file);
+          AssertThrow(in.good(),
+                      ExcMessage("Mesh/File = " + file +
+                                 ": cannot open the mesh file."));
+        }
+    }
+
+    void
+    MeshGenerator::create(Triangulation<2> &tria) const
+    {
+      if (type == Type::gmsh)
+        names = read_gmsh(tria, file);
+      else
+        {
+          make_blocks(tria,
+                      Point<2>(0, 0),
+                      Point<2>(length, height),
+                      blocks_x,
+                      blocks_y,
+                      type);
+          names = {{"left", 0}, {"right", 1}, {"bottom", 2}, {"top", 3}};
+        }
+    }
+
+    const std::map<std::string, types::boundary_id> &
+    MeshGenerator::boundary_names() const
+    {
+      return names;
+    }
+
+    types::boundary_id
+    MeshGenerator::boundary_id(const std::string &name) const
+    {
+      const auto it = names.find(name);
+      if (it != names.end())
+        return it->second;
+      std::string known;
+      for (const auto &n : names)
+        known += " " + n.first;
+      AssertThrow(false,
+                  ExcMessage("Unknown boundary name '" + name +
+                             "'; this mesh has:" + known + "."));
+      return numbers::invalid_boundary_id;
+    }
+
+    void
+    MeshGenerator::make_blocks(Triangulation<2> & tria,
+                               const Point<2> &   lower,
+                               const Point<2> &   upper,
+                               const unsigned int nx,
+                               const unsigned int ny,
+                               const Type         type)
+    {
+      Assert(type != Type::gmsh, ExcInternalError());
+      const double hx = (upper[0] - lower[0]) / nx;
+      const double hy = (upper[1] - lower[1]) / ny;
+
+      std::vector<Point<2>> vertices;
+      for (unsigned int j = 0; j <= ny; ++j)
+        for (unsigned int i = 0; i <= nx; ++i)
+          vertices.emplace_back(lower[0] + i * hx, lower[1] + j * hy);
+      const auto corner = [nx](const unsigned int i, const unsigned int j) {
+        return j * (nx + 1) + i;
+      };
+
+      std::vector<CellData<2>> cells;
+      const auto add = [&cells](const unsigned int a,
+                                const unsigned int b,
+                                const unsigned int c) {
+        CellData<2> cell(3);
+        cell.vertices = {a, b, c}; // counter-clockwise
+        cells.push_back(cell);
+      };
+      for (unsigned int j = 0; j < ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          {
+            const unsigned int v00 = corner(i, j), v10 = corner(i + 1, j),
+                               v01 = corner(i, j + 1),
+                               v11 = corner(i + 1, j + 1);
+            if (type == Type::criss_cross)
+              {
+                const unsigned int c = vertices.size();
+                vertices.emplace_back(lower[0] + (i + 0.5) * hx,
+                                      lower[1] + (j + 0.5) * hy);
+                add(v00, v10, c);
+                add(v10, v11, c);
+                add(v11, v01, c);
+                add(v01, v00, c);
+              }
+            else
+              {
+                add(v00, v10, v11);
+                add(v00, v11, v01);
+              }
+          }
+
+      tria.create_triangulation(vertices, cells, SubCellData());
+
+      // Simplex grid generators do not colorize: name the sides ourselves.
+      const double tol = 1e-10 * std::max(hx, hy);
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<2> c = cell->face(f)->center();
+              types::boundary_id id = 0;
+              if (std::abs(c[0] - lower[0]) < tol)
+                id = 0;
+              else if (std::abs(c[0] - upper[0]) < tol)
+                id = 1;
+              else if (std::abs(c[1] - lower[1]) < tol)
+                id = 2;
+              else
+                id = 3;
+              cell->face(f)->set_boundary_id(id);
+            }
+    }
+
+    std::map<std::string, types::boundary_id>
+    MeshGenerator::read_gmsh(Triangulation<2> &tria, const std::string &filename)
+    {
+      std::ifstream in(filename);
+      AssertThrow(in.good(),
+                  ExcMessage("Mesh/File = " + filename +
+                             ": cannot open the mesh file."));
+
+      // Physical names: "$PhysicalNames / n / dim tag \"name\"".
+      std::map<std::string, types::boundary_id> physical_names;
+      {
+        std::string line;
+        while (std::getline(in, line))
+          if (line.rfind("$PhysicalNames", 0) == 0)
+            {
+              unsigned int n = 0;
+              in >> n;
+              for (unsigned int i = 0; i < n && in; ++i)
+                {
+                  int         dim = 0, tag = 0;
+                  std::string rest;
+                  in >> dim >> tag;
+                  std::getline(in, rest);
+                  const auto a = rest.find('"'), b = rest.rfind('"');
+                  if (dim == 1 && a != std::string::npos && b > a)
+                    physical_names[rest.substr(a + 1, b - a - 1)] = tag;
+                }
+              break;
+            }
+      }
+      in.clear();
+      in.seekg(0);
+
+      GridIn<2> grid_in;
+      grid_in.attach_triangulation(tria);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false,
+                      ExcMessage("Mesh/File = " + filename +
+                                 ": not a readable Gmsh mesh (" + e.what() +
+                                 ")."));
+        }
+      AssertThrow(tria.n_active_cells() > 0,
+                  ExcMessage("Mesh/File = " + filename + ": no cells."));
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          AssertThrow(cell->reference_cell() == ReferenceCells::Triangle,
+                      ExcMessage("Mesh/File = " + filename +
+                                 ": psmpm needs a mesh of triangles only."));
+          AssertThrow(cell->measure() > 0,
+                      ExcMessage("Mesh/File = " + filename + ": cell " +
+                                 std::to_string(cell->active_cell_index()) +
+                                 " is inverted (clockwise vertices)."));
+        }
+      return physical_names;
+    }
+  } // namespace Mesh
+} // namespace psmpm
