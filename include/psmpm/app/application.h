@@ -1,0 +1,49 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_app_application_h
+#define psmpm_app_application_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace psmpm
+{
+  namespace App
+  {
+    /// Exit codes of the psmpm executable.
+    enum ExitCode : int
+    {
+      success     = 0,
+      internal    = 1, ///< unexpected failure (a bug)
+      bad_input   = 2, ///< command line, parameter file or mesh rejected
+      unstable    = 3, ///< the run stopped as unstable (see summary.json)
+    };
+
+    /// The scene that runs when no parameter file is given: the small
+    /// deformation vibrating bar of thesis Table 4.1 on 4 blocks.
+    extern const char *default_scene;
+
+    /// Declare every parameter of every scene type.
+    void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Run psmpm with the command line @p args (without the program name):
+     * `[scene.prm] [--set "Subsection/Entry=value"]... [--validate]
+     * [--print-parameters] [--help]`. Returns an ExitCode; messages go to
+     * std::cout / std::cerr on rank 0. Nothing is written unless the whole
+     * input is valid.
+     */
+    int
+    run(const std::vector<std::string> &args, MPI_Comm comm);
+
+    int
+    run(int argc, char **argv, MPI_Comm comm);
+  } // namespace App
+} // namespace psmpm
+
+#endif

@@ -1,0 +1,61 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_particles_particle_generator_h
+#define psmpm_particles_particle_generator_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/tria.h>
+
+#include <psmpm/mesh/cell_locator.h>
+#include <psmpm/mesh/mesh_generator.h>
+#include <psmpm/particles/particle_set.h>
+
+#include <functional>
+
+namespace psmpm
+{
+  namespace Particles
+  {
+    /**
+     * Initial material points (subsection "Particles"). On block meshes a
+     * regular "Per block x" by "Per block y" layout at the centres of a
+     * uniform sub-grid of every block (thesis Sec. 4.1); on Gmsh meshes
+     * each triangle is split into "Per cell"^2 similar triangles with a
+     * particle at each centroid. Volume = covered area / particles in it,
+     * mass = density x volume. "Region" limits the material to a box.
+     */
+    class ParticleGenerator
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /**
+       * Add the particles whose cell satisfies @p is_owned to @p particles.
+       * Ids are global and independent of the number of ranks.
+       */
+      void
+      generate(const Mesh::MeshGenerator &                mesh,
+               const Triangulation<2> &                   tria,
+               const Mesh::CellLocator &                  locator,
+               const double                               density,
+               const std::function<bool(unsigned int)> &is_owned,
+               ParticleSet &                              particles) const;
+
+      unsigned int per_block_x = 16;
+      unsigned int per_block_y = 14;
+      unsigned int per_cell    = 3;
+      std::vector<double> region; ///< empty or {x0, y0, x1, y1}
+      double       max_particles = 5e7;
+
+    private:
+      bool
+      in_region(const Point<2> &p) const;
+    };
+  } // namespace Particles
+} // namespace psmpm
+
+#endif

@@ -1,0 +1,309 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <psmpm/app/application.h>
+#include <psmpm/postprocess/summary.h>
+#include <psmpm/solver/mpm_solver.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace psmpm
+{
+  namespace App
+  {
+    using namespace dealii;
+
+    const char *default_scene = R"(# Embedded default scene: vibrating bar, small deformation (thesis Table 4.1)
+set Output directory = output-default
+subsection Geometry
+  set Length = 25
+  set Height = 2
+end
+subsection Mesh
+  set Type = criss-cross
+  set Blocks x = 4
+  set Blocks y = 1
+end
+subsection Basis
+  set Type = linear
+end
+subsection Material
+  set Density = 1
+  set Young's modulus = 100
+  set Poisson's ratio = 0
+end
+subsection Particles
+  set Per block x = 16
+  set Per block y = 14
+end
+subsection Initial conditions
+  set Velocity = v0*sin(pi*x/L); 0
+  set Function constants = v0=0.1, L=25
+end
+subsection Boundary conditions
+  set Fixed x = left, right
+  set Fixed y = left, right, bottom, top
+end
+subsection Time
+  set End time = 0.02
+  set Time step = 1e-5
+end
+subsection Mass matrix
+  set Type = consistent
+end
+subsection Reference solution
+  set Type = vibrating bar
+  set Velocity amplitude = 0.1
+end
+subsection Output
+  set Interval = 500
+end
+)";
+
+    namespace
+    {
+      const char *usage =
+        "Usage: psmpm [scene.prm] [options]\n"
+        "  Runs the scene in scene.prm (or the embedded default scene, the\n"
+        "  small-deformation vibrating bar) and writes VTU/PVD output,\n"
+        "  statistics.txt, parameters.prm and summary.json into the\n"
+        "  'Output directory'.\n"
+        "Options:\n"
+        "  --set \"Subsection/Entry=value\"  override one entry (repeatable)\n"
+        "  --validate            check the input (parameters, mesh, time step), write nothing\n"
+        "  --print-parameters    print all entries with defaults and documentation\n"
+        "  --help                this text\n"
+        "Exit codes: 0 success, 1 internal error, 2 bad input, 3 unstable run.\n";
+
+      /// The message of an exception without deal.II's source location.
+      std::string
+      message_of(const std::exception &e)
+      {
+        if (const auto *d = dynamic_cast<const ExceptionBase *>(&e))
+          {
+            std::ostringstream s;
+            d->print_info(s);
+            std::string m = s.str();
+            while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+              m.pop_back();
+            if (!m.empty())
+              return m;
+            return d->get_exc_name();
+          }
+        return e.what();
+      }
+
+      void
+      apply_override(ParameterHandler &prm, const std::string &assignment)
+      {
+        const auto eq = assignment.find('=');
+        AssertThrow(eq != std::string::npos,
+                    ExcMessage("--set '" + assignment +
+                               "': expected Subsection/Entry=value."));
+        const auto path  = Utilities::split_string_list(assignment.substr(0, eq), '/');
+        const auto value = Utilities::trim(assignment.substr(eq + 1));
+        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+          prm.enter_subsection(path[i]);
+        try
+          {
+            prm.set(path.back(), value);
+          }
+        catch (const std::exception &e)
+          {
+            for (unsigned int i = 0; i + 1 < path.size(); ++i)
+              prm.leave_subsection();
+            AssertThrow(false,
+                        ExcMessage("--set '" + assignment + "': " + message_of(e)));
+          }
+        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+          prm.leave_subsection();
+      }
+
+      /// Relative mesh files are taken relative to the parameter file.
+      void
+      resolve_mesh_file(ParameterHandler &prm, const std::string &prm_file)
+      {
+        prm.enter_subsection("Mesh");
+        const std::filesystem::path file = prm.get("File");
+        if (!file.empty() && file.is_relative() && !prm_file.empty())
+          {
+            const auto candidate =
+              std::filesystem::path(prm_file).parent_path() / file;
+            if (std::filesystem::exists(candidate))
+              prm.set("File", candidate.string());
+          }
+        prm.leave_subsection();
+      }
+
+      struct CommandLine
+      {
+        std::string              prm_file;
+        std::vector<std::string> overrides;
+        bool                     validate         = false;
+        bool                     print_parameters = false;
+        bool                     help             = false;
+      };
+
+      CommandLine
+      parse_command_line(const std::vector<std::string> &args)
+      {
+        CommandLine cl;
+        for (unsigned int i = 0; i < args.size(); ++i)
+          {
+            const std::string &a = args[i];
+            if (a == "--help" || a == "-h")
+              cl.help = true;
+            else if (a == "--validate")
+              cl.validate = true;
+            else if (a == "--print-parameters")
+              cl.print_parameters = true;
+            else if (a == "--set")
+              {
+                AssertThrow(i + 1 < args.size(),
+                            ExcMessage("--set needs an argument "
+                                       "\"Subsection/Entry=value\"."));
+                cl.overrides.push_back(args[++i]);
+              }
+            else if (a.rfind("--", 0) == 0)
+              {
+                AssertThrow(false,
+                            ExcMessage("unknown option " + a + " (see --help)."));
+              }
+            else
+              {
+                AssertThrow(cl.prm_file.empty(),
+                            ExcMessage("more than one parameter file given ('" +
+                                       cl.prm_file + "' and '" + a + "')."));
+                cl.prm_file = a;
+              }
+          }
+        return cl;
+      }
+    } // namespace
+
+    void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Output directory",
+                        "output",
+                        Patterns::FileName(Patterns::FileName::output),
+                        "Directory for VTU/PVD output, statistics.txt, "
+                        "parameters.prm and summary.json; created if needed.");
+      prm.declare_entry("Problem",
+                        "mpm",
+                        Patterns::Selection("mpm"),
+                        "mpm: material point simulation.");
+      Solver::MPMSolver::declare_parameters(prm);
+    }
+
+    int
+    run(const std::vector<std::string> &args, MPI_Comm comm)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+      Timer      wall;
+      wall.start();
+
+      CommandLine cl;
+      ParameterHandler prm;
+      declare_parameters(prm);
+      Solver::MPMSolver solver(comm);
+      std::string       where = "the command line";
+      try
+        {
+          cl = parse_command_line(args);
+          if (cl.help)
+            {
+              if (root)
+                std::cout << usage;
+              return success;
+            }
+          if (cl.print_parameters)
+            {
+              if (root)
+                prm.print_parameters(std::cout, ParameterHandler::PRM);
+              return success;
+            }
+          where = cl.prm_file.empty() ? "the embedded default scene" :
+                                        "file " + cl.prm_file;
+          if (cl.prm_file.empty())
+            prm.parse_input_from_string(default_scene, "default scene");
+          else
+            {
+              AssertThrow(std::filesystem::is_regular_file(cl.prm_file),
+                          ExcMessage("cannot open parameter file '" +
+                                     cl.prm_file + "'."));
+              prm.parse_input(cl.prm_file);
+            }
+          for (const auto &o : cl.overrides)
+            apply_override(prm, o);
+          resolve_mesh_file(prm, cl.prm_file);
+          solver.quiet = false;
+          solver.parse_parameters(prm);
+          solver.setup();
+        }
+      catch (const std::bad_alloc &)
+        {
+          if (root)
+            std::cerr << "psmpm: error in " << where
+                      << ": out of memory while setting up the scene (reduce "
+                         "the number of blocks or particles).\n";
+          return bad_input;
+        }
+      catch (const std::exception &e)
+        {
+          if (root)
+            std::cerr << "psmpm: error in " << where << ": " << message_of(e)
+                      << "\n";
+          return bad_input;
+        }
+      if (cl.validate)
+        {
+          if (root)
+            std::cout << "psmpm: " << where << " is valid.\n";
+          return success;
+        }
+
+      const std::string dir = prm.get("Output directory");
+      try
+        {
+          if (root)
+            {
+              std::filesystem::create_directories(dir);
+              std::ofstream out(dir + "/parameters.prm");
+              prm.print_parameters(out, ParameterHandler::PRM);
+            }
+          MPI_Barrier(comm);
+          const auto status = solver.run(dir);
+          Postprocess::Summary summary;
+          solver.fill_summary(summary);
+          summary.set("wall_time_s", wall.wall_time());
+          summary.set("parameter_file", cl.prm_file.empty() ? "(default scene)" : cl.prm_file);
+          if (root)
+            {
+              summary.write(dir + "/summary.json");
+              std::cout << "psmpm: " << summary.to_json();
+            }
+          return status == Solver::MPMSolver::Status::completed ? success : unstable;
+        }
+      catch (const std::exception &e)
+        {
+          if (root)
+            std::cerr << "psmpm: internal error: " << message_of(e) << "\n";
+          return internal;
+        }
+    }
+
+    int
+    run(int argc, char **argv, MPI_Comm comm)
+    {
+      return run(std::vector<std::string>(argv + 1, argv + argc), comm);
+    }
+  } // namespace App
+} // namespace psmpm
