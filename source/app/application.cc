@@ -100,32 +100,6 @@ end
         return e.what();
       }
 
-      void
-      apply_override(ParameterHandler &prm, const std::string &assignment)
-      {
-        const auto eq = assignment.find('=');
-        AssertThrow(eq != std::string::npos,
-                    ExcMessage("--set '" + assignment +
-                               "': expected Subsection/Entry=value."));
-        const auto path  = Utilities::split_string_list(assignment.substr(0, eq), '/');
-        const auto value = Utilities::trim(assignment.substr(eq + 1));
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
-          prm.enter_subsection(path[i]);
-        try
-          {
-            prm.set(path.back(), value);
-          }
-        catch (const std::exception &e)
-          {
-            for (unsigned int i = 0; i + 1 < path.size(); ++i)
-              prm.leave_subsection();
-            AssertThrow(false,
-                        ExcMessage("--set '" + assignment + "': " + message_of(e)));
-          }
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
-          prm.leave_subsection();
-      }
-
       /// Relative mesh files are taken relative to the parameter file.
       void
       resolve_mesh_file(ParameterHandler &prm, const std::string &prm_file)
@@ -140,6 +114,23 @@ end
               prm.set("File", candidate.string());
           }
         prm.leave_subsection();
+      }
+
+      /// Deterministic results with 5 significant digits.
+      void
+      print_test_output(const Postprocess::Summary &summary, std::ostream &out)
+      {
+        for (const std::string key : {"steps", "n_dofs", "n_particles", "end_time"})
+          out << key << " = " << summary.get_number(key) << "\n";
+        for (const std::string key : {"errors.displacement_L2",
+                                      "errors.velocity_L2",
+                                      "errors.stress_L2"})
+          if (summary.has(key))
+            {
+              char buf[64];
+              std::snprintf(buf, sizeof(buf), "%.4e", summary.get_number(key));
+              out << key << " = " << buf << "\n";
+            }
       }
 
       struct CommandLine
@@ -189,6 +180,33 @@ end
     } // namespace
 
     void
+    apply_override(ParameterHandler &prm, const std::string &assignment)
+    {
+      const auto eq = assignment.find('=');
+      AssertThrow(eq != std::string::npos,
+                  ExcMessage("--set '" + assignment +
+                             "': expected Subsection/Entry=value."));
+      const auto path  = Utilities::split_string_list(assignment.substr(0, eq), '/');
+      const auto value = Utilities::trim(assignment.substr(eq + 1));
+      for (unsigned int i = 0; i + 1 < path.size(); ++i)
+        prm.enter_subsection(path[i]);
+      try
+        {
+          prm.set(path.back(), value);
+        }
+      catch (const std::exception &e)
+        {
+          for (unsigned int i = 0; i + 1 < path.size(); ++i)
+            prm.leave_subsection();
+          AssertThrow(false,
+                      ExcMessage("--set '" + assignment + "': " + message_of(e)));
+        }
+      for (unsigned int i = 0; i + 1 < path.size(); ++i)
+        prm.leave_subsection();
+    }
+
+
+    void
     declare_parameters(ParameterHandler &prm)
     {
       prm.declare_entry("Output directory",
@@ -196,6 +214,13 @@ end
                         Patterns::FileName(Patterns::FileName::output),
                         "Directory for VTU/PVD output, statistics.txt, "
                         "parameters.prm and summary.json; created if needed.");
+      prm.enter_subsection("Output");
+      prm.declare_entry("Test output",
+                        "false",
+                        Patterns::Bool(),
+                        "Print only machine-independent results (no timings) "
+                        "to the screen, for scene tests.");
+      prm.leave_subsection();
       prm.declare_entry("Problem",
                         "mpm",
                         Patterns::Selection("mpm"),
@@ -244,7 +269,6 @@ end
           for (const auto &o : cl.overrides)
             apply_override(prm, o);
           resolve_mesh_file(prm, cl.prm_file);
-          solver.quiet = false;
           solver.parse_parameters(prm);
           solver.setup();
         }
@@ -280,6 +304,10 @@ end
               prm.print_parameters(out, ParameterHandler::PRM);
             }
           MPI_Barrier(comm);
+          prm.enter_subsection("Output");
+          const bool test_output = prm.get_bool("Test output");
+          prm.leave_subsection();
+          solver.quiet      = test_output;
           const auto status = solver.run(dir);
           Postprocess::Summary summary;
           solver.fill_summary(summary);
@@ -288,7 +316,16 @@ end
           if (root)
             {
               summary.write(dir + "/summary.json");
-              std::cout << "psmpm: " << summary.to_json();
+              if (test_output)
+                {
+                  std::cout << "status = "
+                            << (status == Solver::MPMSolver::Status::completed ?
+                                  "completed" : "unstable")
+                            << "\n";
+                  print_test_output(summary, std::cout);
+                }
+              else
+                std::cout << "psmpm: " << summary.to_json();
             }
           return status == Solver::MPMSolver::Status::completed ? success : unstable;
         }

@@ -419,6 +419,10 @@ namespace psmpm
       update_particle_state(dt);
       locate_particles();
       time += dt;
+      // Snap to the end time so that round-off in the sum of steps does
+      // not leave a sliver of a last step.
+      if (std::abs(end_time - time) < 1e-9 * time_step)
+        time = end_time;
     }
   } // namespace Solver
 } // namespace psmpm

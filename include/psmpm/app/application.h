@@ -43,6 +43,10 @@ namespace psmpm
 
     int
     run(int argc, char **argv, MPI_Comm comm);
+
+    /// Apply "Subsection/Entry=value" to @p prm (as --set does).
+    void
+    apply_override(dealii::ParameterHandler &prm, const std::string &assignment);
   } // namespace App
 } // namespace psmpm
 

@@ -1,0 +1,54 @@
+// ---------------------------------------------------------------------
+// psmpm: helpers for tests that drive the MPM solver directly.
+// ---------------------------------------------------------------------
+#ifndef psmpm_tests_mpm_tests_h
+#define psmpm_tests_mpm_tests_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <psmpm/app/application.h>
+#include <psmpm/solver/mpm_solver.h>
+
+#include "tests.h"
+
+#include <string>
+#include <vector>
+
+/// Set up @p solver from the default scene with the given overrides.
+inline void
+configure(psmpm::Solver::MPMSolver &      solver,
+          const std::vector<std::string> &overrides)
+{
+  ParameterHandler prm;
+  psmpm::App::declare_parameters(prm);
+  prm.parse_input_from_string(psmpm::App::default_scene, "default scene");
+  for (const auto &o : overrides)
+    psmpm::App::apply_override(prm, o);
+  solver.quiet = true;
+  solver.parse_parameters(prm);
+  solver.setup();
+}
+
+/// Largest violation of "the particle lies in its triangle" and whether
+/// every particle's cell agrees with a brute-force search.
+inline std::pair<double, bool>
+check_particles_in_cells(const psmpm::Solver::MPMSolver &solver)
+{
+  const auto &particles = solver.get_particles();
+  const auto &locator   = solver.get_locator();
+  double      worst     = 0;
+  bool        agree     = true;
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    {
+      const auto l = locator.barycentric(particles.cell[p], particles.position[p]);
+      worst = std::max(worst, -std::min({l[0], l[1], l[2]}));
+      bool found = false;
+      for (unsigned int c = 0; c < locator.n_cells() && !found; ++c)
+        found = locator.contains(c, particles.position[p]) &&
+                locator.contains(particles.cell[p], particles.position[p]);
+      agree = agree && found;
+    }
+  return {worst, agree};
+}
+
+#endif
