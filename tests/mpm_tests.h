@@ -16,7 +16,7 @@
 
 /// Set up @p solver from the default scene with the given overrides.
 inline void
-configure(psmpm::Solver::MPMSolver &      solver,
+configure(psmpm::Solver::MPMSolver       &solver,
           const std::vector<std::string> &overrides)
 {
   ParameterHandler prm;
@@ -40,8 +40,9 @@ check_particles_in_cells(const psmpm::Solver::MPMSolver &solver)
   bool        agree     = true;
   for (std::size_t p = 0; p < particles.size(); ++p)
     {
-      const auto l = locator.barycentric(particles.cell[p], particles.position[p]);
-      worst = std::max(worst, -std::min({l[0], l[1], l[2]}));
+      const auto l =
+        locator.barycentric(particles.cell[p], particles.position[p]);
+      worst      = std::max(worst, -std::min({l[0], l[1], l[2]}));
       bool found = false;
       for (unsigned int c = 0; c < locator.n_cells() && !found; ++c)
         found = locator.contains(c, particles.position[p]) &&

@@ -25,7 +25,7 @@ filter(const double x, const double tol = 1e-12)
 }
 
 /// Print a pass/fail line for a check; the .output expects "OK".
-#define PSMPM_CHECK(out, condition)                                        \
+#define PSMPM_CHECK(out, condition) \
   (out) << ((condition) ? "OK   " : "FAIL ") << #condition << std::endl
 
 /// Run the body of a test and report exceptions as test output.

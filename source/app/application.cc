@@ -20,7 +20,8 @@ namespace psmpm
   {
     using namespace dealii;
 
-    const char *default_scene = R"(# Embedded default scene: vibrating bar, small deformation (thesis Table 4.1)
+    const char *default_scene =
+      R"(# Embedded default scene: vibrating bar, small deformation (thesis Table 4.1)
 set Output directory = output-default
 subsection Geometry
   set Length = 25
@@ -120,7 +121,8 @@ end
       void
       print_test_output(const Postprocess::Summary &summary, std::ostream &out)
       {
-        for (const std::string key : {"steps", "n_dofs", "n_particles", "end_time"})
+        for (const std::string key :
+             {"steps", "n_dofs", "n_particles", "end_time"})
           out << key << " = " << summary.get_number(key) << "\n";
         for (const std::string key : {"errors.displacement_L2",
                                       "errors.velocity_L2",
@@ -165,7 +167,8 @@ end
             else if (a.rfind("--", 0) == 0)
               {
                 AssertThrow(false,
-                            ExcMessage("unknown option " + a + " (see --help)."));
+                            ExcMessage("unknown option " + a +
+                                       " (see --help)."));
               }
             else
               {
@@ -186,7 +189,8 @@ end
       AssertThrow(eq != std::string::npos,
                   ExcMessage("--set '" + assignment +
                              "': expected Subsection/Entry=value."));
-      const auto path  = Utilities::split_string_list(assignment.substr(0, eq), '/');
+      const auto path =
+        Utilities::split_string_list(assignment.substr(0, eq), '/');
       const auto value = Utilities::trim(assignment.substr(eq + 1));
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.enter_subsection(path[i]);
@@ -199,7 +203,8 @@ end
           for (unsigned int i = 0; i + 1 < path.size(); ++i)
             prm.leave_subsection();
           AssertThrow(false,
-                      ExcMessage("--set '" + assignment + "': " + message_of(e)));
+                      ExcMessage("--set '" + assignment +
+                                 "': " + message_of(e)));
         }
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.leave_subsection();
@@ -235,7 +240,7 @@ end
       Timer      wall;
       wall.start();
 
-      CommandLine cl;
+      CommandLine      cl;
       ParameterHandler prm;
       declare_parameters(prm);
       Solver::MPMSolver solver(comm);
@@ -307,12 +312,13 @@ end
           prm.enter_subsection("Output");
           const bool test_output = prm.get_bool("Test output");
           prm.leave_subsection();
-          solver.quiet      = test_output;
-          const auto status = solver.run(dir);
+          solver.quiet                = test_output;
+          const auto           status = solver.run(dir);
           Postprocess::Summary summary;
           solver.fill_summary(summary);
           summary.set("wall_time_s", wall.wall_time());
-          summary.set("parameter_file", cl.prm_file.empty() ? "(default scene)" : cl.prm_file);
+          summary.set("parameter_file",
+                      cl.prm_file.empty() ? "(default scene)" : cl.prm_file);
           if (root)
             {
               summary.write(dir + "/summary.json");
@@ -320,14 +326,16 @@ end
                 {
                   std::cout << "status = "
                             << (status == Solver::MPMSolver::Status::completed ?
-                                  "completed" : "unstable")
+                                  "completed" :
+                                  "unstable")
                             << "\n";
                   print_test_output(summary, std::cout);
                 }
               else
                 std::cout << "psmpm: " << summary.to_json();
             }
-          return status == Solver::MPMSolver::Status::completed ? success : unstable;
+          return status == Solver::MPMSolver::Status::completed ? success :
+                                                                  unstable;
         }
       catch (const std::exception &e)
         {

@@ -10,7 +10,8 @@ namespace psmpm
   {
     Linear::Linear()
       : fe(1)
-    {}
+    {
+    }
 
     std::string
     Linear::name() const
@@ -44,15 +45,15 @@ namespace psmpm
 
     void
     Linear::evaluate(const unsigned int cell,
-                     const Point<2> &   p,
-                     double *           values,
-                     Tensor<1, 2> *     gradients) const
+                     const Point<2>    &p,
+                     double            *values,
+                     Tensor<1, 2>      *gradients) const
     {
       const CellData &d = cell_data[cell];
       for (unsigned int k = 0; k < 3; ++k)
         {
-          values[k] = d.constant[k] + d.gradient[k][0] * p[0] +
-                      d.gradient[k][1] * p[1];
+          values[k] =
+            d.constant[k] + d.gradient[k][0] * p[0] + d.gradient[k][1] * p[1];
           if (gradients != nullptr)
             gradients[k] = d.gradient[k];
         }
@@ -61,9 +62,9 @@ namespace psmpm
     void
     Linear::evaluate(const unsigned int  n,
                      const unsigned int *cells,
-                     const Point<2> *    points,
-                     double *            values,
-                     Tensor<1, 2> *      gradients) const
+                     const Point<2>     *points,
+                     double             *values,
+                     Tensor<1, 2>       *gradients) const
     {
       for (unsigned int i = 0; i < n; ++i)
         Linear::evaluate(cells[i],
@@ -74,10 +75,10 @@ namespace psmpm
 
     void
     Linear::make_dirichlet_constraints(
-      const DoFHandler<2> &               dof_handler,
+      const DoFHandler<2>                &dof_handler,
       const std::set<types::boundary_id> &ids,
-      const Function<2> &                 g,
-      AffineConstraints<double> &         constraints) const
+      const Function<2>                  &g,
+      AffineConstraints<double>          &constraints) const
     {
       std::vector<types::global_dof_index> dofs(3);
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -98,7 +99,8 @@ namespace psmpm
                         {
                           constraints.add_line(dof);
                           constraints.set_inhomogeneity(dof,
-                                                        g.value(cell->vertex(k)));
+                                                        g.value(
+                                                          cell->vertex(k)));
                         }
                     }
         }

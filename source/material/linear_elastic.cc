@@ -12,9 +12,18 @@ namespace psmpm
     LinearElastic::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
-      prm.declare_entry("Density", "1", Patterns::Double(), "Initial density [kg/m^3], > 0.");
-      prm.declare_entry("Young's modulus", "100", Patterns::Double(), "Young's modulus E [Pa], > 0.");
-      prm.declare_entry("Poisson's ratio", "0", Patterns::Double(), "Poisson's ratio, -1 < nu < 0.5.");
+      prm.declare_entry("Density",
+                        "1",
+                        Patterns::Double(),
+                        "Initial density [kg/m^3], > 0.");
+      prm.declare_entry("Young's modulus",
+                        "100",
+                        Patterns::Double(),
+                        "Young's modulus E [Pa], > 0.");
+      prm.declare_entry("Poisson's ratio",
+                        "0",
+                        Patterns::Double(),
+                        "Poisson's ratio, -1 < nu < 0.5.");
       prm.leave_subsection();
     }
 
@@ -30,14 +39,15 @@ namespace psmpm
                   ExcMessage("Material/Density = " + prm_value(density) +
                              ": must be positive."));
       AssertThrow(youngs_modulus > 0,
-                  ExcMessage("Material/Young's modulus = " +
-                             prm_value(youngs_modulus) + ": must be positive."));
+                  ExcMessage(
+                    "Material/Young's modulus = " + prm_value(youngs_modulus) +
+                    ": must be positive."));
       AssertThrow(poisson_ratio > -1 && poisson_ratio < 0.5,
-                  ExcMessage("Material/Poisson's ratio = " +
-                             prm_value(poisson_ratio) +
-                             ": must satisfy -1 < nu < 0.5 (0.5 is "
-                             "incompressible, which this explicit "
-                             "formulation cannot represent)."));
+                  ExcMessage(
+                    "Material/Poisson's ratio = " + prm_value(poisson_ratio) +
+                    ": must satisfy -1 < nu < 0.5 (0.5 is "
+                    "incompressible, which this explicit "
+                    "formulation cannot represent)."));
     }
   } // namespace Material
 } // namespace psmpm

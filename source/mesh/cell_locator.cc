@@ -37,8 +37,8 @@ namespace psmpm
           for (unsigned int k = 0; k < 3; ++k)
             {
               min_height =
-                std::min(min_height, 2 * area / v[(k + 1) % 3].distance(
-                                                  v[(k + 2) % 3]));
+                std::min(min_height,
+                         2 * area / v[(k + 1) % 3].distance(v[(k + 2) % 3]));
               unsigned int a = cell->vertex_index((k + 1) % 3),
                            b = cell->vertex_index((k + 2) % 3);
               const auto key = std::make_pair(std::min(a, b), std::max(a, b));
@@ -47,7 +47,7 @@ namespace psmpm
                 edge_owner[key] = {c, k};
               else
                 {
-                  neighbors[c][k]                              = it->second.first;
+                  neighbors[c][k] = it->second.first;
                   neighbors[it->second.first][it->second.second] = c;
                 }
             }
@@ -61,9 +61,12 @@ namespace psmpm
       box.extend(1e-10 * box.side_length(0) + 1e-10 * box.side_length(1));
       const double aspect = box.side_length(0) / box.side_length(1);
       const double nb     = std::sqrt(static_cast<double>(n));
-      n_buckets[0] = std::max(1u, static_cast<unsigned int>(nb * std::sqrt(aspect)));
-      n_buckets[1] = std::max(1u, static_cast<unsigned int>(nb / std::sqrt(aspect)));
-      std::vector<std::vector<unsigned int>> buckets(n_buckets[0] * n_buckets[1]);
+      n_buckets[0] =
+        std::max(1u, static_cast<unsigned int>(nb * std::sqrt(aspect)));
+      n_buckets[1] =
+        std::max(1u, static_cast<unsigned int>(nb / std::sqrt(aspect)));
+      std::vector<std::vector<unsigned int>> buckets(n_buckets[0] *
+                                                     n_buckets[1]);
       for (unsigned int c = 0; c < n; ++c)
         {
           const auto lo = bucket_of(boxes[c].get_boundary_points().first);
@@ -89,7 +92,7 @@ namespace psmpm
         {
           const double s = (p[d] - box.lower_bound(d)) / box.side_length(d);
           const int    i = static_cast<int>(std::floor(s * n_buckets[d]));
-          ij[d] = static_cast<unsigned int>(
+          ij[d]          = static_cast<unsigned int>(
             std::clamp(i, 0, static_cast<int>(n_buckets[d]) - 1));
         }
       return ij;

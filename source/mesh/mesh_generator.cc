@@ -64,12 +64,12 @@ namespace psmpm
       prm.leave_subsection();
       prm.enter_subsection("Mesh");
       const std::string t = prm.get("Type");
-      type     = (t == "criss-cross" ? Type::criss_cross :
-                  t == "diagonal"    ? Type::diagonal :
-                                       Type::gmsh);
-      blocks_x = prm.get_integer("Blocks x");
-      blocks_y = prm.get_integer("Blocks y");
-      file     = prm.get("File");
+      type                = (t == "criss-cross" ? Type::criss_cross :
+                             t == "diagonal"    ? Type::diagonal :
+                                                  Type::gmsh);
+      blocks_x            = prm.get_integer("Blocks x");
+      blocks_y            = prm.get_integer("Blocks y");
+      file                = prm.get("File");
       prm.leave_subsection();
 
       AssertThrow(type == Type::gmsh || (length > 0 && height > 0),
@@ -128,9 +128,9 @@ namespace psmpm
     }
 
     void
-    MeshGenerator::make_blocks(Triangulation<2> & tria,
-                               const Point<2> &   lower,
-                               const Point<2> &   upper,
+    MeshGenerator::make_blocks(Triangulation<2>  &tria,
+                               const Point<2>    &lower,
+                               const Point<2>    &upper,
                                const unsigned int nx,
                                const unsigned int ny,
                                const Type         type)
@@ -148,7 +148,7 @@ namespace psmpm
       };
 
       std::vector<CellData<2>> cells;
-      const auto add = [&cells](const unsigned int a,
+      const auto               add = [&cells](const unsigned int a,
                                 const unsigned int b,
                                 const unsigned int c) {
         CellData<2> cell(3);
@@ -186,7 +186,7 @@ namespace psmpm
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             {
-              const Point<2> c = cell->face(f)->center();
+              const Point<2>     c  = cell->face(f)->center();
               types::boundary_id id = 0;
               if (std::abs(c[0] - lower[0]) < tol)
                 id = 0;
@@ -201,7 +201,8 @@ namespace psmpm
     }
 
     std::map<std::string, types::boundary_id>
-    MeshGenerator::read_gmsh(Triangulation<2> &tria, const std::string &filename)
+    MeshGenerator::read_gmsh(Triangulation<2>  &tria,
+                             const std::string &filename)
     {
       std::ifstream in(filename);
       AssertThrow(in.good(),

@@ -43,10 +43,10 @@ namespace psmpm
     ParticleGenerator::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Particles");
-      per_block_x   = prm.get_integer("Per block x");
-      per_block_y   = prm.get_integer("Per block y");
-      per_cell      = prm.get_integer("Per cell");
-      region        = Utilities::string_to_double(
+      per_block_x = prm.get_integer("Per block x");
+      per_block_y = prm.get_integer("Per block y");
+      per_cell    = prm.get_integer("Per cell");
+      region      = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Region")));
       max_particles = prm.get_double("Maximum number");
       prm.leave_subsection();
@@ -54,7 +54,8 @@ namespace psmpm
                   ExcMessage("Particles/Region must be empty or x0, y0, x1, "
                              "y1, got " +
                              std::to_string(region.size()) + " numbers."));
-      AssertThrow(region.empty() || (region[2] > region[0] && region[3] > region[1]),
+      AssertThrow(region.empty() ||
+                    (region[2] > region[0] && region[3] > region[1]),
                   ExcMessage("Particles/Region: need x0 < x1 and y0 < y1."));
     }
 
@@ -67,28 +68,28 @@ namespace psmpm
 
     void
     ParticleGenerator::generate(
-      const Mesh::MeshGenerator &              mesh,
-      const Triangulation<2> &                 tria,
-      const Mesh::CellLocator &                locator,
+      const Mesh::MeshGenerator               &mesh,
+      const Triangulation<2>                  &tria,
+      const Mesh::CellLocator                 &locator,
       const double                             density,
       const std::function<bool(unsigned int)> &is_owned,
-      ParticleSet &                            particles) const
+      ParticleSet                             &particles) const
     {
       if (mesh.type != Mesh::MeshGenerator::Type::gmsh)
         {
-          const double total = double(mesh.blocks_x) * mesh.blocks_y *
-                               per_block_x * per_block_y;
+          const double total =
+            double(mesh.blocks_x) * mesh.blocks_y * per_block_x * per_block_y;
           AssertThrow(total <= max_particles,
                       ExcMessage(
                         "Particles/Per block x, Per block y: " +
                         std::to_string(total) +
                         " particles exceed Particles/Maximum number = " +
                         std::to_string(max_particles) + "."));
-          const double hx = mesh.length / mesh.blocks_x;
-          const double hy = mesh.height / mesh.blocks_y;
-          const double volume = hx * hy / (per_block_x * per_block_y);
-          std::uint64_t id = 0;
-          unsigned int  hint = 0;
+          const double  hx     = mesh.length / mesh.blocks_x;
+          const double  hy     = mesh.height / mesh.blocks_y;
+          const double  volume = hx * hy / (per_block_x * per_block_y);
+          std::uint64_t id     = 0;
+          unsigned int  hint   = 0;
           for (unsigned int bj = 0; bj < mesh.blocks_y; ++bj)
             for (unsigned int bi = 0; bi < mesh.blocks_x; ++bi)
               for (unsigned int j = 0; j < per_block_y; ++j)
@@ -108,22 +109,22 @@ namespace psmpm
         }
       else
         {
-          const unsigned int k = per_cell;
-          const double total   = double(tria.n_active_cells()) * k * k;
+          const unsigned int k     = per_cell;
+          const double       total = double(tria.n_active_cells()) * k * k;
           AssertThrow(total <= max_particles,
-                      ExcMessage("Particles/Per cell: " +
-                                 std::to_string(total) +
-                                 " particles exceed Particles/Maximum "
-                                 "number = " +
-                                 std::to_string(max_particles) + "."));
+                      ExcMessage(
+                        "Particles/Per cell: " + std::to_string(total) +
+                        " particles exceed Particles/Maximum "
+                        "number = " +
+                        std::to_string(max_particles) + "."));
           for (const auto &cell : tria.active_cell_iterators())
             {
-              const unsigned int c = cell->active_cell_index();
-              const Point<2>     v0 = cell->vertex(0);
-              const Tensor<1, 2> e1 = (cell->vertex(1) - v0) / k;
-              const Tensor<1, 2> e2 = (cell->vertex(2) - v0) / k;
-              const double volume = cell->measure() / (k * k);
-              std::uint64_t id = std::uint64_t(c) * k * k;
+              const unsigned int c      = cell->active_cell_index();
+              const Point<2>     v0     = cell->vertex(0);
+              const Tensor<1, 2> e1     = (cell->vertex(1) - v0) / k;
+              const Tensor<1, 2> e2     = (cell->vertex(2) - v0) / k;
+              const double       volume = cell->measure() / (k * k);
+              std::uint64_t      id     = std::uint64_t(c) * k * k;
               // k^2 sub-triangles: upright (i, j) and inverted ones.
               for (unsigned int j = 0; j < k; ++j)
                 for (unsigned int i = 0; i + j < k; ++i)

@@ -43,7 +43,7 @@ namespace psmpm
     void
     ParticleSet::add(const std::uint64_t new_id,
                      const unsigned int  new_cell,
-                     const Point<2> &    x,
+                     const Point<2>     &x,
                      const double        new_volume,
                      const double        new_density)
     {

@@ -15,7 +15,9 @@ namespace psmpm
     namespace
     {
       std::string
-      piece_name(const std::string &base, const unsigned int step, const unsigned int rank)
+      piece_name(const std::string &base,
+                 const unsigned int step,
+                 const unsigned int rank)
       {
         return base + "-" + Utilities::int_to_string(step, 5) + "." +
                Utilities::int_to_string(rank, 3) + ".vtu";
@@ -23,17 +25,23 @@ namespace psmpm
 
       /// Write this rank's piece and, on rank 0, the .pvtu record.
       std::string
-      write_pieces(const std::string &directory,
-                   const std::string &base,
-                   const unsigned int step,
-                   const std::vector<std::string> &names,
-                   const std::vector<std::tuple<unsigned int, unsigned int, std::string, DataComponentInterpretation::DataComponentInterpretation>> &ranges,
-                   const std::vector<DataOutBase::Patch<0, 2>> *point_patches,
-                   const std::vector<DataOutBase::Patch<2, 2>> *cell_patches,
-                   MPI_Comm comm)
+      write_pieces(
+        const std::string              &directory,
+        const std::string              &base,
+        const unsigned int              step,
+        const std::vector<std::string> &names,
+        const std::vector<
+          std::tuple<unsigned int,
+                     unsigned int,
+                     std::string,
+                     DataComponentInterpretation::DataComponentInterpretation>>
+                                                    &ranges,
+        const std::vector<DataOutBase::Patch<0, 2>> *point_patches,
+        const std::vector<DataOutBase::Patch<2, 2>> *cell_patches,
+        MPI_Comm                                     comm)
       {
-        const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-        const unsigned int size = Utilities::MPI::n_mpi_processes(comm);
+        const unsigned int    rank = Utilities::MPI::this_mpi_process(comm);
+        const unsigned int    size = Utilities::MPI::n_mpi_processes(comm);
         DataOutBase::VtkFlags flags;
         flags.compression_level = DataOutBase::VtkFlags::best_speed;
         {
@@ -60,11 +68,12 @@ namespace psmpm
     OutputWriter::OutputWriter(const std::string &directory, MPI_Comm comm)
       : directory(directory)
       , comm(comm)
-    {}
+    {
+    }
 
     void
     OutputWriter::write_pvd(
-      const std::string &                                 name,
+      const std::string                                 &name,
       const std::vector<std::pair<double, std::string>> &records) const
     {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
@@ -81,7 +90,8 @@ namespace psmpm
       using Field = Particles::ParticleSet::Field;
       std::vector<std::string> names;
       for (unsigned int f = 0; f < Particles::ParticleSet::n_fields; ++f)
-        names.push_back(Particles::ParticleSet::field_name(static_cast<Field>(f)));
+        names.push_back(
+          Particles::ParticleSet::field_name(static_cast<Field>(f)));
       names.push_back("cell");
 
       std::vector<DataOutBase::Patch<0, 2>> patches(particles.size());
@@ -96,16 +106,28 @@ namespace psmpm
           patch.data(names.size() - 1, 0) = particles.cell[i];
         }
       const auto vec = DataComponentInterpretation::component_is_part_of_vector;
-      const std::vector<std::tuple<unsigned int, unsigned int, std::string, DataComponentInterpretation::DataComponentInterpretation>>
+      const std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
         ranges = {{static_cast<unsigned int>(Field::displacement_x),
                    static_cast<unsigned int>(Field::displacement_y),
-                   "displacement", vec},
+                   "displacement",
+                   vec},
                   {static_cast<unsigned int>(Field::velocity_x),
                    static_cast<unsigned int>(Field::velocity_y),
-                   "velocity", vec}};
-      particle_records.emplace_back(
-        time,
-        write_pieces(directory, "particles", step, names, ranges, &patches, nullptr, comm));
+                   "velocity",
+                   vec}};
+      particle_records.emplace_back(time,
+                                    write_pieces(directory,
+                                                 "particles",
+                                                 step,
+                                                 names,
+                                                 ranges,
+                                                 &patches,
+                                                 nullptr,
+                                                 comm));
       write_pvd("particles", particle_records);
     }
 
@@ -113,28 +135,36 @@ namespace psmpm
     OutputWriter::write_grid(
       const unsigned int               step,
       const double                     time,
-      const DoFHandler<2> &            dof_handler,
-      const Basis::Space &             space,
+      const DoFHandler<2>             &dof_handler,
+      const Basis::Space              &space,
       const std::vector<unsigned int> &cell_dofs,
-      const std::vector<std::pair<std::string, const std::vector<Tensor<1, 2>> *>>
+      const std::vector<
+        std::pair<std::string, const std::vector<Tensor<1, 2>> *>>
         &vector_fields,
       const std::vector<std::pair<std::string, const std::vector<double> *>>
         &scalar_fields)
     {
       std::vector<std::string> names;
-      std::vector<std::tuple<unsigned int, unsigned int, std::string, DataComponentInterpretation::DataComponentInterpretation>>
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
         ranges;
       for (const auto &f : vector_fields)
         {
-          ranges.emplace_back(names.size(), names.size() + 1, f.first,
-                              DataComponentInterpretation::component_is_part_of_vector);
+          ranges.emplace_back(
+            names.size(),
+            names.size() + 1,
+            f.first,
+            DataComponentInterpretation::component_is_part_of_vector);
           names.push_back(f.first + "_x");
           names.push_back(f.first + "_y");
         }
       for (const auto &f : scalar_fields)
         names.push_back(f.first);
 
-      const unsigned int n = space.dofs_per_cell();
+      const unsigned int                    n = space.dofs_per_cell();
       std::vector<double>                   values(n);
       std::vector<DataOutBase::Patch<2, 2>> patches;
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -169,8 +199,15 @@ namespace psmpm
               }
             patches.push_back(std::move(patch));
           }
-      grid_records.emplace_back(
-        time, write_pieces(directory, "grid", step, names, ranges, nullptr, &patches, comm));
+      grid_records.emplace_back(time,
+                                write_pieces(directory,
+                                             "grid",
+                                             step,
+                                             names,
+                                             ranges,
+                                             nullptr,
+                                             &patches,
+                                             comm));
       write_pvd("grid", grid_records);
     }
   } // namespace Postprocess

@@ -27,7 +27,7 @@ namespace psmpm
     }
 
     void
-    ReferenceSolution::parse_parameters(ParameterHandler &             prm,
+    ReferenceSolution::parse_parameters(ParameterHandler              &prm,
                                         const Material::LinearElastic &material,
                                         const double                   L)
     {
@@ -51,9 +51,10 @@ namespace psmpm
         {
           const double k = numbers::PI / length;
           const double w = k * std::sqrt(youngs_modulus / density);
-          s.displacement[0] = amplitude / w * std::sin(w * t) * std::sin(k * X[0]);
-          s.velocity[0]     = amplitude * std::cos(w * t) * std::sin(k * X[0]);
-          s.stress[0][0]    = youngs_modulus * amplitude / w * std::sin(w * t) *
+          s.displacement[0] =
+            amplitude / w * std::sin(w * t) * std::sin(k * X[0]);
+          s.velocity[0]  = amplitude * std::cos(w * t) * std::sin(k * X[0]);
+          s.stress[0][0] = youngs_modulus * amplitude / w * std::sin(w * t) *
                            k * std::cos(k * X[0]);
         }
       return s;

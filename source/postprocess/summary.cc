@@ -98,8 +98,9 @@ namespace psmpm
           if (dot == std::string::npos)
             top.emplace_back(kv.first, kv.second);
           else
-            groups[kv.first.substr(0, dot)].emplace_back(
-              kv.first.substr(dot + 1), kv.second);
+            groups[kv.first.substr(0, dot)].emplace_back(kv.first.substr(dot +
+                                                                         1),
+                                                         kv.second);
         }
       std::ostringstream out;
       out << "{\n";
@@ -133,8 +134,7 @@ namespace psmpm
       const std::string tmp = filename + ".tmp";
       {
         std::ofstream out(tmp);
-        AssertThrow(out.good(),
-                    dealii::ExcMessage("cannot write " + filename));
+        AssertThrow(out.good(), dealii::ExcMessage("cannot write " + filename));
         out << to_json();
       }
       std::rename(tmp.c_str(), filename.c_str());

@@ -47,7 +47,8 @@ namespace psmpm
     GridSystem::Parameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Mass matrix");
-      type = prm.get("Type") == "lumped" ? MassType::lumped : MassType::consistent;
+      type =
+        prm.get("Type") == "lumped" ? MassType::lumped : MassType::consistent;
       tolerance      = prm.get_double("Solver tolerance");
       max_iterations = prm.get_integer("Maximum iterations");
       preconditioner = prm.get("Preconditioner");
@@ -57,8 +58,8 @@ namespace psmpm
                              prm_value(tolerance) + ": must lie in (0, 1)."));
     }
 
-    GridSystem::GridSystem(const Parameters &   parameters,
-                           const Basis::Space & space,
+    GridSystem::GridSystem(const Parameters    &parameters,
+                           const Basis::Space  &space,
                            const DoFHandler<2> &dof_handler,
                            MPI_Comm             comm)
       : parameters(parameters)
@@ -67,7 +68,8 @@ namespace psmpm
       , space(space)
       , dof_handler(dof_handler)
       , comm(comm)
-    {}
+    {
+    }
 
     void
     GridSystem::reinit(const std::array<std::set<types::boundary_id>, 2> &fixed)
@@ -88,7 +90,8 @@ namespace psmpm
             owned_cells.push_back(c);
             cell->get_dof_indices(dofs);
             for (unsigned int k = 0; k < dofs_per_cell; ++k)
-              cell_dofs[c * dofs_per_cell + k] = relevant.index_within_set(dofs[k]);
+              cell_dofs[c * dofs_per_cell + k] =
+                relevant.index_within_set(dofs[k]);
           }
 
       for (unsigned int d = 0; d < 2; ++d)
@@ -111,7 +114,10 @@ namespace psmpm
                                             dsp,
                                             component_constraints[d],
                                             true);
-          SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+          SparsityTools::distribute_sparsity_pattern(dsp,
+                                                     owned,
+                                                     comm,
+                                                     relevant);
           for (unsigned int d = 0; d < 2; ++d)
             matrix[d].reinit(owned, owned, dsp, comm);
           cell_mass.assign(n_cells * dofs_per_cell * dofs_per_cell, 0.);
@@ -150,7 +156,7 @@ namespace psmpm
     }
 
     void
-    GridSystem::scatter(const double *                 cell_values,
+    GridSystem::scatter(const double                  *cell_values,
                         const unsigned int             stride,
                         const unsigned int             offset,
                         TrilinosWrappers::MPI::Vector &target) const
@@ -170,7 +176,7 @@ namespace psmpm
 
     void
     GridSystem::to_local(const TrilinosWrappers::MPI::Vector &owned_vector,
-                         std::vector<double> &                local) const
+                         std::vector<double>                 &local) const
     {
       auto &g = const_cast<TrilinosWrappers::MPI::Vector &>(ghosted);
       g       = owned_vector;
@@ -259,12 +265,12 @@ namespace psmpm
         }
       writable.compress(VectorOperation::add);
       TrilinosWrappers::MPI::Vector rhs(owned, comm);
-      rhs = writable;
-      x   = 0;
+      rhs               = writable;
+      x                 = 0;
       const double norm = rhs.l2_norm();
       if (norm == 0)
         return 0;
-      SolverControl control(parameters.max_iterations,
+      SolverControl                           control(parameters.max_iterations,
                             parameters.tolerance * norm,
                             false,
                             false);

@@ -9,8 +9,8 @@
 
 struct Case
 {
-  std::string name;
-  std::string prm;      // parameter file text ("" = no file written)
+  std::string              name;
+  std::string              prm; // parameter file text ("" = no file written)
   std::vector<std::string> extra_args;
   std::vector<std::string> must_mention;
 };
@@ -19,24 +19,57 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out("output");
-  const std::string head = "set Output directory = bad_output\n";
-  const std::vector<Case> cases = {
-    {"unknown entry", head + "set Foo = 1\n", {}, {"Foo", "case.prm"}},
-    {"unknown subsection entry", head + "subsection Mesh\n set Colour = red\nend\n", {}, {"Colour", "case.prm"}},
-    {"value out of range", head + "subsection Mesh\n set Blocks x = 0\nend\n", {}, {"Blocks x", "case.prm"}},
-    {"not a number", head + "subsection Time\n set End time = soon\nend\n", {}, {"End time", "case.prm"}},
-    {"negative density", head + "subsection Material\n set Density = -1\nend\n", {}, {"Material/Density", "case.prm"}},
-    {"Poisson's ratio 0.5", head + "subsection Material\n set Poisson's ratio = 0.5\nend\n", {}, {"Poisson's ratio", "case.prm"}},
-    {"missing mesh file", head + "subsection Mesh\n set Type = gmsh\n set File = nowhere.msh\nend\n", {}, {"Mesh/File", "nowhere.msh", "case.prm"}},
-    {"unstable time step", head + "subsection Time\n set Time step = 1\nend\n", {}, {"Time/Time step", "stability", "case.prm"}},
-    {"unknown boundary", head + "subsection Boundary conditions\n set Fixed x = west\nend\n", {}, {"Fixed x", "west", "case.prm"}},
-    {"bad velocity expression", head + "subsection Initial conditions\n set Velocity = sin(; 0\nend\n", {}, {"Initial conditions/Velocity", "case.prm"}},
-    {"malformed line", head + "subsection Mesh\n set Type criss-cross\nend\n", {}, {"case.prm"}},
-    {"unterminated subsection", head + "subsection Mesh\n set Type = diagonal\n", {}, {"case.prm"}},
-    {"missing parameter file", "", {"no_such_file.prm"}, {"no_such_file.prm"}},
-    {"bad --set", head, {"--set", "Mesh/Blocks x=-3"}, {"Blocks x"}},
-    {"unknown option", head, {"--frobnicate"}, {"--frobnicate"}},
+  std::ofstream                    out("output");
+  const std::string                head = "set Output directory = bad_output\n";
+  const std::vector<Case>          cases = {
+             {"unknown entry", head + "set Foo = 1\n", {}, {"Foo", "case.prm"}},
+             {"unknown subsection entry",
+              head + "subsection Mesh\n set Colour = red\nend\n",
+              {},
+              {"Colour", "case.prm"}},
+             {"value out of range",
+              head + "subsection Mesh\n set Blocks x = 0\nend\n",
+              {},
+              {"Blocks x", "case.prm"}},
+             {"not a number",
+              head + "subsection Time\n set End time = soon\nend\n",
+              {},
+              {"End time", "case.prm"}},
+             {"negative density",
+              head + "subsection Material\n set Density = -1\nend\n",
+              {},
+              {"Material/Density", "case.prm"}},
+             {"Poisson's ratio 0.5",
+              head + "subsection Material\n set Poisson's ratio = 0.5\nend\n",
+              {},
+              {"Poisson's ratio", "case.prm"}},
+             {"missing mesh file",
+              head + "subsection Mesh\n set Type = gmsh\n set File = nowhere.msh\nend\n",
+              {},
+              {"Mesh/File", "nowhere.msh", "case.prm"}},
+             {"unstable time step",
+              head + "subsection Time\n set Time step = 1\nend\n",
+              {},
+              {"Time/Time step", "stability", "case.prm"}},
+             {"unknown boundary",
+              head + "subsection Boundary conditions\n set Fixed x = west\nend\n",
+              {},
+              {"Fixed x", "west", "case.prm"}},
+             {"bad velocity expression",
+              head + "subsection Initial conditions\n set Velocity = sin(; 0\nend\n",
+              {},
+              {"Initial conditions/Velocity", "case.prm"}},
+             {"malformed line",
+              head + "subsection Mesh\n set Type criss-cross\nend\n",
+              {},
+              {"case.prm"}},
+             {"unterminated subsection",
+              head + "subsection Mesh\n set Type = diagonal\n",
+              {},
+              {"case.prm"}},
+             {"missing parameter file", "", {"no_such_file.prm"}, {"no_such_file.prm"}},
+             {"bad --set", head, {"--set", "Mesh/Blocks x=-3"}, {"Blocks x"}},
+             {"unknown option", head, {"--frobnicate"}, {"--frobnicate"}},
   };
   for (const auto &c : cases)
     {
@@ -50,8 +83,8 @@ main(int argc, char **argv)
         }
       args.insert(args.end(), c.extra_args.begin(), c.extra_args.end());
       std::ostringstream captured;
-      auto *old = std::cerr.rdbuf(captured.rdbuf());
-      const int code = psmpm::App::run(args, MPI_COMM_WORLD);
+      auto              *old  = std::cerr.rdbuf(captured.rdbuf());
+      const int          code = psmpm::App::run(args, MPI_COMM_WORLD);
       std::cerr.rdbuf(old);
       bool mentions = true;
       for (const auto &m : c.must_mention)

@@ -20,12 +20,17 @@ main()
                           Mesh::MeshGenerator::Type::diagonal})
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::make_blocks(tria, Point<2>(0, 0), Point<2>(25, 2), 16, 3, type);
+      Mesh::MeshGenerator::make_blocks(tria,
+                                       Point<2>(0, 0),
+                                       Point<2>(25, 2),
+                                       16,
+                                       3,
+                                       type);
       Mesh::CellLocator locator;
       locator.reinit(tria);
 
-      std::mt19937                           rng(42);
-      std::uniform_real_distribution<double> ux(0, 25), uy(0, 2);
+      std::mt19937                                rng(42);
+      std::uniform_real_distribution<double>      ux(0, 25), uy(0, 2);
       std::uniform_int_distribution<unsigned int> uc(0, locator.n_cells() - 1);
       unsigned int wrong_walk = 0, wrong_bucket = 0;
       for (unsigned int i = 0; i < 2000; ++i)
@@ -37,13 +42,21 @@ main()
               brute = c;
           const unsigned int walk   = locator.locate(p, uc(rng));
           const unsigned int bucket = locator.locate(p);
-          wrong_walk += !(walk != Mesh::CellLocator::invalid && locator.contains(walk, p) && brute != Mesh::CellLocator::invalid);
-          wrong_bucket += !(bucket != Mesh::CellLocator::invalid && locator.contains(bucket, p));
+          wrong_walk +=
+            !(walk != Mesh::CellLocator::invalid && locator.contains(walk, p) &&
+              brute != Mesh::CellLocator::invalid);
+          wrong_bucket += !(bucket != Mesh::CellLocator::invalid &&
+                            locator.contains(bucket, p));
         }
-      out << "wrong walks " << wrong_walk << ", wrong bucket searches " << wrong_bucket << std::endl;
+      out << "wrong walks " << wrong_walk << ", wrong bucket searches "
+          << wrong_bucket << std::endl;
       PSMPM_CHECK(out, wrong_walk == 0 && wrong_bucket == 0);
-      PSMPM_CHECK(out, locator.locate(Point<2>(25.5, 1.0), 0) == Mesh::CellLocator::invalid);
-      PSMPM_CHECK(out, locator.locate(Point<2>(3.0, -0.01)) == Mesh::CellLocator::invalid);
+      PSMPM_CHECK(out,
+                  locator.locate(Point<2>(25.5, 1.0), 0) ==
+                    Mesh::CellLocator::invalid);
+      PSMPM_CHECK(out,
+                  locator.locate(Point<2>(3.0, -0.01)) ==
+                    Mesh::CellLocator::invalid);
       // Smallest height: criss-cross blocks 25/16 x 2/3; diagonal likewise.
       out << "minimum height " << locator.minimum_height() << std::endl;
     }

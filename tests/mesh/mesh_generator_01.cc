@@ -11,21 +11,30 @@
 using namespace psmpm;
 
 void
-check(const Mesh::MeshGenerator::Type type, const std::string &name, std::ofstream &out)
+check(const Mesh::MeshGenerator::Type type,
+      const std::string              &name,
+      std::ofstream                  &out)
 {
   const unsigned int nx = 5, ny = 3;
   const double       L = 25, H = 2;
   Triangulation<2>   tria;
-  Mesh::MeshGenerator::make_blocks(tria, Point<2>(0, 0), Point<2>(L, H), nx, ny, type);
+  Mesh::MeshGenerator::make_blocks(tria,
+                                   Point<2>(0, 0),
+                                   Point<2>(L, H),
+                                   nx,
+                                   ny,
+                                   type);
   out << name << ": cells " << tria.n_active_cells() << ", vertices "
       << tria.n_vertices() << std::endl;
-  const unsigned int per_block = type == Mesh::MeshGenerator::Type::criss_cross ? 4 : 2;
+  const unsigned int per_block =
+    type == Mesh::MeshGenerator::Type::criss_cross ? 4 : 2;
   PSMPM_CHECK(out, tria.n_active_cells() == per_block * nx * ny);
-  const unsigned int centres = type == Mesh::MeshGenerator::Type::criss_cross ? nx * ny : 0;
+  const unsigned int centres =
+    type == Mesh::MeshGenerator::Type::criss_cross ? nx * ny : 0;
   PSMPM_CHECK(out, tria.n_vertices() == (nx + 1) * (ny + 1) + centres);
 
-  double                             area = 0;
-  bool                               positive = true;
+  double                                     area     = 0;
+  bool                                       positive = true;
   std::map<types::boundary_id, unsigned int> faces;
   std::map<types::boundary_id, double>       lengths;
   for (const auto &cell : tria.active_cell_iterators())
@@ -42,8 +51,12 @@ check(const Mesh::MeshGenerator::Type type, const std::string &name, std::ofstre
   PSMPM_CHECK(out, positive);
   PSMPM_CHECK(out, std::abs(area - L * H) < 1e-12 * L * H);
   // left = 0, right = 1, bottom = 2, top = 3
-  PSMPM_CHECK(out, faces[0] == ny && faces[1] == ny && faces[2] == nx && faces[3] == nx);
-  PSMPM_CHECK(out, std::abs(lengths[0] - H) < 1e-12 && std::abs(lengths[2] - L) < 1e-12);
+  PSMPM_CHECK(out,
+              faces[0] == ny && faces[1] == ny && faces[2] == nx &&
+                faces[3] == nx);
+  PSMPM_CHECK(out,
+              std::abs(lengths[0] - H) < 1e-12 &&
+                std::abs(lengths[2] - L) < 1e-12);
   PSMPM_CHECK(out, faces.size() == 4);
 }
 

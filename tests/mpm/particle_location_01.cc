@@ -1,27 +1,33 @@
 // A spinning block (no boundary conditions) moves particles across many
 // criss-cross and diagonal edges; after every step each particle's
 // reference point must lie in its own triangle (deal.II 9.4.1's own sort
-// gets this wrong on triangles, see doc/architecture.md).
+// gets this wrong on triangles, see doc/design.md).
 #include "../mpm_tests.h"
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out("output");
+  std::ofstream                    out("output");
   for (const std::string mesh : {"criss-cross", "diagonal"})
     {
       psmpm::Solver::MPMSolver solver(MPI_COMM_WORLD);
-      configure(solver, {"Geometry/Length=8", "Geometry/Height=8", "Mesh/Type=" + mesh,
-                         "Mesh/Blocks x=8", "Mesh/Blocks y=8",
-                         "Particles/Per block x=3", "Particles/Per block y=3",
-                         "Particles/Region=2, 2, 6, 6",
-                         "Mass matrix/Type=lumped",
-                         "Boundary conditions/Fixed x=", "Boundary conditions/Fixed y=",
-                         "Reference solution/Type=none",
-                         "Initial conditions/Velocity=-(y-4); (x-4)"});
-      double worst   = 0;
-      bool   agree   = true;
+      configure(solver,
+                {"Geometry/Length=8",
+                 "Geometry/Height=8",
+                 "Mesh/Type=" + mesh,
+                 "Mesh/Blocks x=8",
+                 "Mesh/Blocks y=8",
+                 "Particles/Per block x=3",
+                 "Particles/Per block y=3",
+                 "Particles/Region=2, 2, 6, 6",
+                 "Mass matrix/Type=lumped",
+                 "Boundary conditions/Fixed x=",
+                 "Boundary conditions/Fixed y=",
+                 "Reference solution/Type=none",
+                 "Initial conditions/Velocity=-(y-4); (x-4)"});
+      double worst = 0;
+      bool   agree = true;
       for (unsigned int n = 0; n < 40; ++n)
         {
           solver.do_time_step(0.01);
@@ -34,7 +40,8 @@ main(int argc, char **argv)
       double      moved     = 0;
       for (std::size_t p = 0; p < particles.size(); ++p)
         moved = std::max(moved, particles.displacement[p].norm());
-      out << mesh << ": largest displacement > 0.5: " << (moved > 0.5) << std::endl;
+      out << mesh << ": largest displacement > 0.5: " << (moved > 0.5)
+          << std::endl;
       PSMPM_CHECK(out, worst <= 1e-12);
       PSMPM_CHECK(out, agree);
     }

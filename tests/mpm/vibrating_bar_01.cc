@@ -8,9 +8,9 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out("output");
-  const double thesis[2] = {1.80956e-04, 4.44076e-05};
-  double       error[2];
+  std::ofstream                    out("output");
+  const double                     thesis[2] = {1.80956e-04, 4.44076e-05};
+  double                           error[2];
   for (unsigned int i = 0; i < 2; ++i)
     {
       psmpm::Solver::MPMSolver solver(MPI_COMM_WORLD);
@@ -18,8 +18,9 @@ main(int argc, char **argv)
       while (solver.get_time() < 0.02 - 1e-12)
         solver.do_time_step(1e-5);
       error[i] = solver.compute_errors().displacement;
-      out << "blocks " << (4 << i) << ": E_u / thesis = " << std::setprecision(2)
-          << error[i] / thesis[i] << std::endl;
+      out << "blocks " << (4 << i)
+          << ": E_u / thesis = " << std::setprecision(2) << error[i] / thesis[i]
+          << std::endl;
       PSMPM_CHECK(out, std::abs(error[i] / thesis[i] - 1) < 0.1);
     }
   const double rate = std::log2(error[0] / error[1]);

@@ -10,15 +10,19 @@
 using namespace psmpm;
 
 void
-report(const Particles::ParticleSet &particles, const Mesh::CellLocator &locator,
-       const double area, const double density, std::ofstream &out)
+report(const Particles::ParticleSet &particles,
+       const Mesh::CellLocator      &locator,
+       const double                  area,
+       const double                  density,
+       std::ofstream                &out)
 {
   double volume = 0, mass = 0, worst = 0;
   for (std::size_t p = 0; p < particles.size(); ++p)
     {
       volume += particles.volume[p];
       mass += particles.mass[p];
-      const auto l = locator.barycentric(particles.cell[p], particles.position[p]);
+      const auto l =
+        locator.barycentric(particles.cell[p], particles.position[p]);
       worst = std::max(worst, -std::min({l[0], l[1], l[2]}));
     }
   out << "particles " << particles.size() << std::endl;
@@ -30,7 +34,7 @@ report(const Particles::ParticleSet &particles, const Mesh::CellLocator &locator
 int
 main()
 {
-  std::ofstream out("output");
+  std::ofstream    out("output");
   ParameterHandler prm;
   Mesh::MeshGenerator::declare_parameters(prm);
   Particles::ParticleGenerator::declare_parameters(prm);
@@ -53,12 +57,19 @@ main()
   locator.reinit(tria);
 
   Particles::ParticleSet particles;
-  generator.generate(mesh, tria, locator, 2.0, [](unsigned int) { return true; }, particles);
+  generator.generate(
+    mesh,
+    tria,
+    locator,
+    2.0,
+    [](unsigned int) { return true; },
+    particles);
   report(particles, locator, 25 * 2, 2.0, out);
   PSMPM_CHECK(out, particles.size() == 3 * 2 * 4 * 3);
   // First particle: centre of the first sub-cell of block (0, 0).
   const double hx = 25. / 3, hy = 1.;
-  PSMPM_CHECK(out, particles.position[0].distance(Point<2>(hx / 8, hy / 6)) < 1e-12);
+  PSMPM_CHECK(out,
+              particles.position[0].distance(Point<2>(hx / 8, hy / 6)) < 1e-12);
   PSMPM_CHECK(out, std::abs(particles.volume[0] - hx * hy / 12) < 1e-12);
   // Ids are unique.
   std::set<std::uint64_t> ids(particles.id.begin(), particles.id.end());
@@ -70,21 +81,37 @@ main()
   prm.leave_subsection();
   generator.parse_parameters(prm);
   Particles::ParticleSet half;
-  generator.generate(mesh, tria, locator, 2.0, [](unsigned int) { return true; }, half);
+  generator.generate(
+    mesh,
+    tria,
+    locator,
+    2.0,
+    [](unsigned int) { return true; },
+    half);
   out << "particles in left half " << half.size() << std::endl;
 
   // Per-cell layout on a diagonal mesh (as used for Gmsh meshes).
   Triangulation<2> tri2;
-  Mesh::MeshGenerator::make_blocks(tri2, Point<2>(0, 0), Point<2>(1, 1), 3, 3,
+  Mesh::MeshGenerator::make_blocks(tri2,
+                                   Point<2>(0, 0),
+                                   Point<2>(1, 1),
+                                   3,
+                                   3,
                                    Mesh::MeshGenerator::Type::diagonal);
   Mesh::CellLocator loc2;
   loc2.reinit(tri2);
   Mesh::MeshGenerator gmsh_like = mesh;
-  gmsh_like.type = Mesh::MeshGenerator::Type::gmsh;
+  gmsh_like.type                = Mesh::MeshGenerator::Type::gmsh;
   Particles::ParticleSet per_cell;
   generator.region.clear();
   generator.per_cell = 3;
-  generator.generate(gmsh_like, tri2, loc2, 1.0, [](unsigned int) { return true; }, per_cell);
+  generator.generate(
+    gmsh_like,
+    tri2,
+    loc2,
+    1.0,
+    [](unsigned int) { return true; },
+    per_cell);
   report(per_cell, loc2, 1.0, 1.0, out);
   PSMPM_CHECK(out, per_cell.size() == 18 * 9);
 }

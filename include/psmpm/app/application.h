@@ -17,10 +17,10 @@ namespace psmpm
     /// Exit codes of the psmpm executable.
     enum ExitCode : int
     {
-      success     = 0,
-      internal    = 1, ///< unexpected failure (a bug)
-      bad_input   = 2, ///< command line, parameter file or mesh rejected
-      unstable    = 3, ///< the run stopped as unstable (see summary.json)
+      success   = 0,
+      internal  = 1, ///< unexpected failure (a bug)
+      bad_input = 2, ///< command line, parameter file or mesh rejected
+      unstable  = 3, ///< the run stopped as unstable (see summary.json)
     };
 
     /// The scene that runs when no parameter file is given: the small
@@ -46,7 +46,8 @@ namespace psmpm
 
     /// Apply "Subsection/Entry=value" to @p prm (as --set does).
     void
-    apply_override(dealii::ParameterHandler &prm, const std::string &assignment);
+    apply_override(dealii::ParameterHandler &prm,
+                   const std::string        &assignment);
   } // namespace App
 } // namespace psmpm
 

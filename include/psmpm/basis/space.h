@@ -64,9 +64,9 @@ namespace psmpm
        */
       virtual void
       evaluate(const unsigned int cell,
-               const Point<2> &   p,
-               double *           values,
-               Tensor<1, 2> *     gradients) const = 0;
+               const Point<2>    &p,
+               double            *values,
+               Tensor<1, 2>      *gradients) const = 0;
 
       /**
        * The same for @p n points at once: one virtual call per batch, so
@@ -76,9 +76,9 @@ namespace psmpm
       virtual void
       evaluate(const unsigned int  n,
                const unsigned int *cells,
-               const Point<2> *    points,
-               double *            values,
-               Tensor<1, 2> *      gradients) const;
+               const Point<2>     *points,
+               double             *values,
+               Tensor<1, 2>       *gradients) const;
 
       /**
        * Add constraints that impose u = g on the boundaries with the given
@@ -87,10 +87,11 @@ namespace psmpm
        * homogeneous case on the whole edge).
        */
       virtual void
-      make_dirichlet_constraints(const DoFHandler<2> &              dof_handler,
-                                 const std::set<types::boundary_id> &ids,
-                                 const Function<2> &                g,
-                                 AffineConstraints<double> &constraints) const = 0;
+      make_dirichlet_constraints(
+        const DoFHandler<2>                &dof_handler,
+        const std::set<types::boundary_id> &ids,
+        const Function<2>                  &g,
+        AffineConstraints<double>          &constraints) const = 0;
     };
 
     /// Create the space named @p name ("linear" or "powell-sabin").

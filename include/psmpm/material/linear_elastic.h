@@ -56,9 +56,9 @@ namespace psmpm
        * increment d(eps_kk) used for the volume update (eq. 2.44).
        */
       double
-      update(const Tensor<2, 2> &dL,
+      update(const Tensor<2, 2>    &dL,
              SymmetricTensor<2, 2> &stress,
-             double &               stress_zz,
+             double                &stress_zz,
              SymmetricTensor<2, 2> &strain) const
       {
         const SymmetricTensor<2, 2> de = symmetrize(dL);

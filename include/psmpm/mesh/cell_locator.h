@@ -19,7 +19,7 @@ namespace psmpm
     /**
      * Finds the triangle that contains a point, with the closed-form
      * barycentric test (deal.II 9.4.1 tests "inside" against the unit
-     * square on triangles, see doc/architecture). After a small move a
+     * square on triangles, see doc/design.md). After a small move a
      * particle is found by walking from its old cell across the edge
      * opposite the most negative barycentric coordinate; a bucket grid
      * over the cells' bounding boxes finds any point from scratch and
@@ -77,10 +77,10 @@ namespace psmpm
       std::vector<std::array<unsigned int, 3>> neighbors; // opposite vertex k
       double                                   min_height = 0;
 
-      BoundingBox<2>                         box;
-      std::array<unsigned int, 2>            n_buckets{{1, 1}};
-      std::vector<unsigned int>              bucket_start;
-      std::vector<unsigned int>              bucket_cells;
+      BoundingBox<2>              box;
+      std::array<unsigned int, 2> n_buckets{{1, 1}};
+      std::vector<unsigned int>   bucket_start;
+      std::vector<unsigned int>   bucket_cells;
       std::array<unsigned int, 2>
       bucket_of(const Point<2> &p) const;
     };

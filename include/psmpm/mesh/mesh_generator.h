@@ -57,9 +57,9 @@ namespace psmpm
 
       /// A rectangle [lower, upper] of nx by ny blocks split as @p type.
       static void
-      make_blocks(Triangulation<2> &tria,
-                  const Point<2> &  lower,
-                  const Point<2> &  upper,
+      make_blocks(Triangulation<2>  &tria,
+                  const Point<2>    &lower,
+                  const Point<2>    &upper,
                   const unsigned int nx,
                   const unsigned int ny,
                   const Type         type);
@@ -68,9 +68,9 @@ namespace psmpm
       static std::map<std::string, types::boundary_id>
       read_gmsh(Triangulation<2> &tria, const std::string &filename);
 
-      Type         type    = Type::criss_cross;
-      double       length  = 1.0;
-      double       height  = 1.0;
+      Type         type     = Type::criss_cross;
+      double       length   = 1.0;
+      double       height   = 1.0;
       unsigned int blocks_x = 1;
       unsigned int blocks_y = 1;
       std::string  file;

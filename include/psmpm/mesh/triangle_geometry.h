@@ -57,7 +57,7 @@ namespace psmpm
           // lambda_k vanishes on edge (a, b) and is 1 at v[k].
           m.gradient[k][0] = (a[1] - b[1]) / twice_area;
           m.gradient[k][1] = (b[0] - a[0]) / twice_area;
-          m.constant[k] = (a[0] * b[1] - b[0] * a[1]) / twice_area;
+          m.constant[k]    = (a[0] * b[1] - b[0] * a[1]) / twice_area;
         }
       return m;
     }

@@ -38,18 +38,18 @@ namespace psmpm
        * Ids are global and independent of the number of ranks.
        */
       void
-      generate(const Mesh::MeshGenerator &                mesh,
-               const Triangulation<2> &                   tria,
-               const Mesh::CellLocator &                  locator,
-               const double                               density,
+      generate(const Mesh::MeshGenerator               &mesh,
+               const Triangulation<2>                  &tria,
+               const Mesh::CellLocator                 &locator,
+               const double                             density,
                const std::function<bool(unsigned int)> &is_owned,
-               ParticleSet &                              particles) const;
+               ParticleSet                             &particles) const;
 
-      unsigned int per_block_x = 16;
-      unsigned int per_block_y = 14;
-      unsigned int per_cell    = 3;
+      unsigned int        per_block_x = 16;
+      unsigned int        per_block_y = 14;
+      unsigned int        per_cell    = 3;
       std::vector<double> region; ///< empty or {x0, y0, x1, y1}
-      double       max_particles = 5e7;
+      double              max_particles = 5e7;
 
     private:
       bool

@@ -24,7 +24,7 @@ namespace psmpm
      * of arrays so that the transfer loops stream through contiguous
      * memory. (deal.II's ParticleHandler sorts particles into triangles
      * wrongly in 9.4.1 and its ghost exchange is broken on simplices, see
-     * doc/architecture.md; ownership here follows the cell's subdomain.)
+     * doc/design.md; ownership here follows the cell's subdomain.)
      * Every particle always knows its cell (active cell index).
      */
     class ParticleSet
@@ -74,7 +74,7 @@ namespace psmpm
       void
       add(const std::uint64_t id,
           const unsigned int  cell,
-          const Point<2> &    x,
+          const Point<2>     &x,
           const double        volume,
           const double        density);
 
@@ -99,18 +99,18 @@ namespace psmpm
       void
       sort_by_cell(const unsigned int n_cells);
 
-      std::vector<std::uint64_t>         id;
-      std::vector<unsigned int>          cell;
-      std::vector<double>                mass;
-      std::vector<double>                volume;
-      std::vector<double>                density;
-      std::vector<Point<2>>              position;
-      std::vector<Point<2>>              initial_position;
-      std::vector<Tensor<1, 2>>          displacement;
-      std::vector<Tensor<1, 2>>          velocity;
-      std::vector<Tensor<1, 2>>          traction; ///< force of boundary particles
-      std::vector<SymmetricTensor<2, 2>> stress;   ///< in-plane Cauchy stress
-      std::vector<double>                stress_zz; ///< out-of-plane (plane strain)
+      std::vector<std::uint64_t> id;
+      std::vector<unsigned int>  cell;
+      std::vector<double>        mass;
+      std::vector<double>        volume;
+      std::vector<double>        density;
+      std::vector<Point<2>>      position;
+      std::vector<Point<2>>      initial_position;
+      std::vector<Tensor<1, 2>>  displacement;
+      std::vector<Tensor<1, 2>>  velocity;
+      std::vector<Tensor<1, 2>>  traction; ///< force of boundary particles
+      std::vector<SymmetricTensor<2, 2>> stress; ///< in-plane Cauchy stress
+      std::vector<double> stress_zz; ///< out-of-plane (plane strain)
       std::vector<SymmetricTensor<2, 2>> strain;
 
     private:

@@ -33,32 +33,35 @@ namespace psmpm
       OutputWriter(const std::string &directory, MPI_Comm comm);
 
       void
-      write_particles(const unsigned int               step,
-                      const double                     time,
-                      const Particles::ParticleSet &   particles);
+      write_particles(const unsigned int            step,
+                      const double                  time,
+                      const Particles::ParticleSet &particles);
 
       /// @p fields: name and coefficients (local relevant numbering, with
       /// @p cell_dofs mapping cell c's k-th function to a coefficient).
       void
-      write_grid(const unsigned int                  step,
-                 const double                        time,
-                 const DoFHandler<2> &               dof_handler,
-                 const Basis::Space &                space,
-                 const std::vector<unsigned int> &   cell_dofs,
-                 const std::vector<std::pair<std::string, const std::vector<Tensor<1, 2>> *>>
-                   &vector_fields,
-                 const std::vector<std::pair<std::string, const std::vector<double> *>>
-                   &scalar_fields);
+      write_grid(
+        const unsigned int               step,
+        const double                     time,
+        const DoFHandler<2>             &dof_handler,
+        const Basis::Space              &space,
+        const std::vector<unsigned int> &cell_dofs,
+        const std::vector<
+          std::pair<std::string, const std::vector<Tensor<1, 2>> *>>
+          &vector_fields,
+        const std::vector<std::pair<std::string, const std::vector<double> *>>
+          &scalar_fields);
 
     private:
       void
-      write_pvd(const std::string &                                 name,
-                const std::vector<std::pair<double, std::string>> &records) const;
+      write_pvd(
+        const std::string                                 &name,
+        const std::vector<std::pair<double, std::string>> &records) const;
 
-      std::string                                   directory;
-      MPI_Comm                                      comm;
-      std::vector<std::pair<double, std::string>>   particle_records;
-      std::vector<std::pair<double, std::string>>   grid_records;
+      std::string                                 directory;
+      MPI_Comm                                    comm;
+      std::vector<std::pair<double, std::string>> particle_records;
+      std::vector<std::pair<double, std::string>> grid_records;
     };
   } // namespace Postprocess
 } // namespace psmpm

@@ -38,7 +38,7 @@ namespace psmpm
       static void
       declare_parameters(ParameterHandler &prm);
       void
-      parse_parameters(ParameterHandler &prm,
+      parse_parameters(ParameterHandler              &prm,
                        const Material::LinearElastic &material,
                        const double                   length);
 
@@ -58,11 +58,11 @@ namespace psmpm
       State
       evaluate(const Point<2> &X, const double t) const;
 
-      Type   type          = Type::none;
-      double amplitude     = 0.1; ///< v0
-      double length        = 25;
+      Type   type           = Type::none;
+      double amplitude      = 0.1; ///< v0
+      double length         = 25;
       double youngs_modulus = 100;
-      double density       = 1;
+      double density        = 1;
     };
   } // namespace Postprocess
 } // namespace psmpm

@@ -57,14 +57,14 @@ namespace psmpm
 
       struct SolveStatistics
       {
-        unsigned int iterations      = 0;
-        double       min_diagonal    = 0; ///< of the lumped mass, active DoFs
-        double       max_diagonal    = 0;
-        unsigned int n_empty_dofs    = 0; ///< DoFs with no particle support
+        unsigned int iterations   = 0;
+        double       min_diagonal = 0; ///< of the lumped mass, active DoFs
+        double       max_diagonal = 0;
+        unsigned int n_empty_dofs = 0; ///< DoFs with no particle support
       };
 
-      GridSystem(const Parameters &   parameters,
-                 const Basis::Space & space,
+      GridSystem(const Parameters    &parameters,
+                 const Basis::Space  &space,
                  const DoFHandler<2> &dof_handler,
                  MPI_Comm             comm);
 
@@ -116,9 +116,9 @@ namespace psmpm
         return local_lumped;
       }
 
-      const Parameters    parameters;
-      const unsigned int  dofs_per_cell;
-      const unsigned int  n_cells;
+      const Parameters   parameters;
+      const unsigned int dofs_per_cell;
+      const unsigned int n_cells;
 
       /// Local relevant index of DoF k of cell c at [c * dofs_per_cell + k]
       /// (owned cells only).
@@ -133,33 +133,32 @@ namespace psmpm
 
     private:
       void
-      scatter(const double *                 cell_values,
-              const unsigned int         stride,
-              const unsigned int         offset,
+      scatter(const double                  *cell_values,
+              const unsigned int             stride,
+              const unsigned int             offset,
               TrilinosWrappers::MPI::Vector &target) const;
       void
       to_local(const TrilinosWrappers::MPI::Vector &owned_vector,
-               std::vector<double> &                 local) const;
+               std::vector<double>                 &local) const;
       unsigned int
-      solve_consistent(const unsigned int d,
-                       TrilinosWrappers::MPI::Vector &x);
+      solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
 
-      const Basis::Space &                  space;
-      const DoFHandler<2> &                 dof_handler;
-      MPI_Comm                              comm;
-      IndexSet                              owned;
-      IndexSet                              relevant;
-      std::vector<types::global_dof_index>  relevant_global;
-      std::array<AffineConstraints<double>, 2> component_constraints;
-      std::array<TrilinosWrappers::SparseMatrix, 2> matrix;
+      const Basis::Space                                 &space;
+      const DoFHandler<2>                                &dof_handler;
+      MPI_Comm                                            comm;
+      IndexSet                                            owned;
+      IndexSet                                            relevant;
+      std::vector<types::global_dof_index>                relevant_global;
+      std::array<AffineConstraints<double>, 2>            component_constraints;
+      std::array<TrilinosWrappers::SparseMatrix, 2>       matrix;
       std::array<TrilinosWrappers::PreconditionJacobi, 2> jacobi;
-      std::array<TrilinosWrappers::PreconditionAMG, 2> amg;
-      TrilinosWrappers::MPI::Vector         lumped;      // owned
-      TrilinosWrappers::MPI::Vector         writable;    // owned + writable ghosts
-      TrilinosWrappers::MPI::Vector         ghosted;     // owned + readable ghosts
-      std::vector<double>                   local_lumped;
-      std::vector<double>                   scratch;
-      SolveStatistics                       stats;
+      std::array<TrilinosWrappers::PreconditionAMG, 2>    amg;
+      TrilinosWrappers::MPI::Vector                       lumped; // owned
+      TrilinosWrappers::MPI::Vector writable; // owned + writable ghosts
+      TrilinosWrappers::MPI::Vector ghosted;  // owned + readable ghosts
+      std::vector<double>           local_lumped;
+      std::vector<double>           scratch;
+      SolveStatistics               stats;
     };
   } // namespace Solver
 } // namespace psmpm

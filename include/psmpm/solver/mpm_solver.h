@@ -79,7 +79,7 @@ namespace psmpm
 
       struct Energies
       {
-        double kinetic = 0, strain = 0, gravity = 0;
+        double       kinetic = 0, strain = 0, gravity = 0;
         Tensor<1, 2> momentum;
         double       mass = 0;
         double
@@ -149,21 +149,21 @@ namespace psmpm
       ConditionalOStream pcout;
 
       // Parameters.
-      Mesh::MeshGenerator             mesh_generator;
-      Particles::ParticleGenerator    particle_generator;
-      Material::LinearElastic         material;
-      Postprocess::ReferenceSolution  reference;
-      GridSystem::Parameters          grid_parameters;
-      std::string                     basis_name;
-      std::string                     velocity_expression;
-      std::string                     velocity_constants;
-      Tensor<1, 2>                    gravity;
+      Mesh::MeshGenerator                     mesh_generator;
+      Particles::ParticleGenerator            particle_generator;
+      Material::LinearElastic                 material;
+      Postprocess::ReferenceSolution          reference;
+      GridSystem::Parameters                  grid_parameters;
+      std::string                             basis_name;
+      std::string                             velocity_expression;
+      std::string                             velocity_constants;
+      Tensor<1, 2>                            gravity;
       std::array<std::vector<std::string>, 2> fixed_names;
-      double       end_time       = 0.02;
-      double       fixed_step     = 0;
-      double       courant_number = 0.5;
-      unsigned int output_interval = 0;
-      double       energy_tolerance = 0.1;
+      double                                  end_time         = 0.02;
+      double                                  fixed_step       = 0;
+      double                                  courant_number   = 0.5;
+      unsigned int                            output_interval  = 0;
+      double                                  energy_tolerance = 0.1;
 
       // Discretisation.
       parallel::shared::Triangulation<2> triangulation;
@@ -180,21 +180,21 @@ namespace psmpm
       std::vector<Tensor<1, 2>> grid_velocity;
 
       std::vector<unsigned int> cell_owner; // MPI rank of each cell
-      double       time_step = 0;
-      double       time_step_now = 0; // of the step under way
-      double       time      = 0;
-      unsigned int step      = 0;
-      std::string  output_directory;
+      double                    time_step     = 0;
+      double                    time_step_now = 0; // of the step under way
+      double                    time          = 0;
+      unsigned int              step          = 0;
+      std::string               output_directory;
       std::unique_ptr<Postprocess::OutputWriter> writer;
-      TableHandler statistics;
-      TimerOutput  timer;
-      Energies     initial_energy;
-      double       energy_scale = 0;
-      Status       status       = Status::completed;
-      std::string  failure_reason;
-      unsigned int failed_step = 0;
-      double       failed_time = 0;
-      unsigned int total_iterations = 0;
+      TableHandler                               statistics;
+      TimerOutput                                timer;
+      Energies                                   initial_energy;
+      double                                     energy_scale = 0;
+      Status                                     status = Status::completed;
+      std::string                                failure_reason;
+      unsigned int                               failed_step      = 0;
+      double                                     failed_time      = 0;
+      unsigned int                               total_iterations = 0;
     };
   } // namespace Solver
 } // namespace psmpm

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Set up, build and run psmpm on Debian 12.
+#   contrib/psmpm.sh run [scene.prm] [psmpm options]   default scene if no file
+#   contrib/psmpm.sh test [ctest options]              the whole test suite
+#   contrib/psmpm.sh build                             only install and build
+# Installs missing Debian packages first (needs root or sudo). The build
+# directory is $PSMPM_BUILD_DIR (default: build/ in the source tree).
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${PSMPM_BUILD_DIR:-$root/build}
+mode=${1:-run}
+[ $# -gt 0 ] && shift
+
+packages=(libdeal.ii-dev cmake g++ make ccache perl numdiff openmpi-bin
+          libbenchmark-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" \
+    || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "psmpm: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq \
+    --no-install-recommends "${missing[@]}"
+fi
+
+# Open MPI refuses to start as root unless told that this is intended.
+if [ "$(id -u)" -eq 0 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+export OMPI_MCA_rmaps_base_oversubscribe=1
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --target psmpm -- -j2
+
+case "$mode" in
+  run)   exec "$build/psmpm" "$@" ;;
+  test)  cd "$build" && exec ctest -j2 --output-on-failure "$@" ;;
+  build) ;;
+  *)     echo "usage: $0 run|test|build" >&2; exit 2 ;;
+esac
