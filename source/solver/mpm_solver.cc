@@ -116,6 +116,19 @@ namespace psmpm
                         Patterns::Integer(0),
                         "Write VTU output every this many steps (0: first and "
                         "last step only).");
+      prm.declare_entry("Error interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Compute error norms against the reference every this "
+                        "many steps (and at the end).");
+      prm.declare_entry("Tracked point",
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 2),
+                        "Initial position x, y: the particle that starts "
+                        "nearest to it is recorded every step in "
+                        "tracked_particle.txt with the reference, and the RMS "
+                        "of the differences over time goes into summary.json "
+                        "(a grid-crossing noise measure).");
       prm.leave_subsection();
 
       prm.enter_subsection("Stability");
@@ -135,7 +148,6 @@ namespace psmpm
       mesh_generator.parse_parameters(prm);
       particle_generator.parse_parameters(prm);
       material.parse_parameters(prm);
-      reference.parse_parameters(prm, material, mesh_generator.length);
       grid_parameters.parse_parameters(prm);
 
       prm.enter_subsection("Basis");
@@ -151,6 +163,12 @@ namespace psmpm
       const auto g = Utilities::string_to_double(split(prm.get("Gravity")));
       gravity      = Tensor<1, 2>({g[0], g[1]});
       prm.leave_subsection();
+
+      reference.parse_parameters(prm,
+                                 material,
+                                 mesh_generator.length,
+                                 mesh_generator.height,
+                                 gravity);
 
       prm.enter_subsection("Boundary conditions");
       fixed_names[0] = split(prm.get("Fixed x"));
@@ -170,6 +188,16 @@ namespace psmpm
 
       prm.enter_subsection("Output");
       output_interval = prm.get_integer("Interval");
+      error_interval  = prm.get_integer("Error interval");
+      {
+        const auto p =
+          Utilities::string_to_double(split(prm.get("Tracked point")));
+        AssertThrow(p.empty() || p.size() == 2,
+                    ExcMessage("Output/Tracked point must be empty or x, y."));
+        track = p.size() == 2;
+        if (track)
+          tracked_point = Point<2>(p[0], p[1]);
+      }
       prm.leave_subsection();
 
       prm.enter_subsection("Stability");
@@ -565,10 +593,24 @@ namespace psmpm
                              0.);
       if (reference.exists())
         {
-          const Errors err = compute_errors();
+          reference.advance_to(time);
+          const bool last = !(time < end_time * (1 - 1e-12));
+          Errors     err{std::nan(""), std::nan(""), std::nan("")};
+          if (n % error_interval == 0 || last)
+            {
+              err = compute_errors();
+              error_history.max_displacement =
+                std::max(error_history.max_displacement, err.displacement);
+              error_history.sum_displacement2 +=
+                err.displacement * err.displacement;
+              error_history.sum_velocity2 += err.velocity * err.velocity;
+              ++error_history.n;
+            }
           statistics.add_value("displacement_L2", err.displacement);
           statistics.add_value("velocity_L2", err.velocity);
           statistics.add_value("stress_L2", err.stress);
+          if (track)
+            record_tracked_particle();
         }
       statistics.add_value("wall_time", wall_time);
       if (n == 0)
@@ -581,6 +623,75 @@ namespace psmpm
           failed_step    = n;
           failed_time    = time;
         }
+    }
+
+    void
+    MPMSolver::find_tracked_particle()
+    {
+      double        best = std::numeric_limits<double>::max();
+      std::uint64_t id   = 0;
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        {
+          const double d =
+            particles.initial_position[p].distance(tracked_point);
+          if (d < best || (d == best && particles.id[p] < id))
+            best = d, id = particles.id[p];
+        }
+      const auto min = Utilities::MPI::min_max_avg(best, comm).min;
+      // Smallest id among the ranks at the minimal distance.
+      const double mine = best == min ? double(id) : 1e300;
+      tracked_id = static_cast<std::uint64_t>(Utilities::MPI::min(mine, comm));
+    }
+
+    void
+    MPMSolver::record_tracked_particle()
+    {
+      // Sum over ranks: only the owner contributes.
+      std::vector<double> v(8, 0.);
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        if (particles.id[p] == tracked_id)
+          {
+            const auto r =
+              reference.evaluate(particles.initial_position[p], time);
+            v = {1,
+                 particles.initial_position[p][0],
+                 particles.initial_position[p][1],
+                 particles.displacement[p][track_axis],
+                 particles.velocity[p][track_axis],
+                 r.displacement[track_axis],
+                 r.velocity[track_axis],
+                 particles.stress[p][track_axis][track_axis] -
+                   r.stress[track_axis][track_axis]};
+          }
+      {
+        std::vector<double> total(v.size());
+        MPI_Allreduce(v.data(),
+                      total.data(),
+                      v.size(),
+                      MPI_DOUBLE,
+                      MPI_SUM,
+                      comm);
+        v = total;
+      }
+      tracked_history.push_back({time, v[3], v[4], v[5], v[6]});
+      tracked_velocity2 += (v[4] - v[6]) * (v[4] - v[6]);
+      tracked_displacement2 += (v[3] - v[5]) * (v[3] - v[5]);
+    }
+
+    void
+    MPMSolver::write_tracked_particle() const
+    {
+      if (!track || Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      std::ofstream out(output_directory + "/tracked_particle.txt");
+      out
+        << "# particle starting nearest to (" << tracked_point << "), id "
+        << tracked_id << ", component " << track_axis << "\n"
+        << "# time displacement velocity reference_displacement reference_velocity\n";
+      out.precision(10);
+      for (const auto &r : tracked_history)
+        out << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3] << ' ' << r[4]
+            << '\n';
     }
 
     void
@@ -625,6 +736,7 @@ namespace psmpm
             out,
             TableHandler::table_with_separate_column_description);
         }
+      write_tracked_particle();
     }
 
     MPMSolver::Status
@@ -635,6 +747,17 @@ namespace psmpm
       Timer wall;
       wall.start();
 
+      if (track && reference.exists())
+        {
+          track_axis =
+            (reference.type ==
+               Postprocess::ReferenceSolution::Type::soil_column ||
+             reference.type ==
+               Postprocess::ReferenceSolution::Type::soil_column_ulfem) ?
+              1 :
+              0;
+          find_tracked_particle();
+        }
       grid_velocity.assign(grid->relevant_dofs().n_elements(), Tensor<1, 2>());
       grid_acceleration = grid_velocity;
       time_step_now     = 0;
@@ -699,6 +822,26 @@ namespace psmpm
           summary.set("errors.displacement_L2", e.displacement);
           summary.set("errors.velocity_L2", e.velocity);
           summary.set("errors.stress_L2", e.stress);
+          summary.set("errors.displacement_L2_max_over_time",
+                      error_history.max_displacement);
+          if (error_history.n > 0)
+            {
+              summary.set("errors.displacement_L2_rms_over_time",
+                          std::sqrt(error_history.sum_displacement2 /
+                                    error_history.n));
+              summary.set("errors.velocity_L2_rms_over_time",
+                          std::sqrt(error_history.sum_velocity2 /
+                                    error_history.n));
+            }
+          if (track && !tracked_history.empty())
+            {
+              summary.set("errors.tracked_velocity_rms",
+                          std::sqrt(tracked_velocity2 /
+                                    tracked_history.size()));
+              summary.set("errors.tracked_displacement_rms",
+                          std::sqrt(tracked_displacement2 /
+                                    tracked_history.size()));
+            }
         }
       // Throughput of the time loop proper: every timed phase but output.
       const auto timings = timer.get_summary_data(TimerOutput::total_wall_time);

@@ -144,6 +144,12 @@ namespace psmpm
       write_output(const unsigned int step);
       std::string
       check_stability(const Energies &e);
+      void
+      find_tracked_particle();
+      void
+      record_tracked_particle();
+      void
+      write_tracked_particle() const;
 
       MPI_Comm           comm;
       ConditionalOStream pcout;
@@ -159,11 +165,26 @@ namespace psmpm
       std::string                             velocity_constants;
       Tensor<1, 2>                            gravity;
       std::array<std::vector<std::string>, 2> fixed_names;
-      double                                  end_time         = 0.02;
-      double                                  fixed_step       = 0;
-      double                                  courant_number   = 0.5;
-      unsigned int                            output_interval  = 0;
-      double                                  energy_tolerance = 0.1;
+      double                                  end_time        = 0.02;
+      double                                  fixed_step      = 0;
+      double                                  courant_number  = 0.5;
+      unsigned int                            output_interval = 0;
+      unsigned int                            error_interval  = 1;
+      bool                                    track           = false;
+      Point<2>                                tracked_point;
+      std::uint64_t                           tracked_id = 0;
+      unsigned int                            track_axis = 0;
+      std::vector<std::array<double, 5>>      tracked_history;
+      double                                  tracked_velocity2     = 0;
+      double                                  tracked_displacement2 = 0;
+      struct ErrorHistory
+      {
+        double       max_displacement  = 0;
+        double       sum_displacement2 = 0;
+        double       sum_velocity2     = 0;
+        unsigned int n                 = 0;
+      } error_history;
+      double energy_tolerance = 0.1;
 
       // Discretisation.
       parallel::shared::Triangulation<2> triangulation;
