@@ -346,17 +346,21 @@ namespace psmpm
                       ExcMessage("Powell-Sabin: degenerate control triangle "
                                  "at " +
                                  describe_vertex(v, V) + "."));
-          const auto bary = Mesh::barycentric_map(data.control_points);
+          // Relative to V: in absolute coordinates the constant of the
+          // map is of size |V|/h and cancellation would cost digits.
+          std::array<Point<2>, 3> local;
           for (unsigned int q = 0; q < 3; ++q)
-            data.triplets[q] = Triplet{bary.constant[q] + bary.gradient[q] * V,
-                                       bary.gradient[q]};
+            local[q] = Point<2>(data.control_points[q] - V);
+          const auto bary = Mesh::barycentric_map(local);
+          for (unsigned int q = 0; q < 3; ++q)
+            data.triplets[q] = Triplet{bary.constant[q], bary.gradient[q]};
 
           // Non-negativity of the basis is equivalent to every PS point
           // lying in the control triangle: check it rather than trust the
           // geometry of a sliver.
           for (const auto &p : points)
             {
-              const auto l = bary(p);
+              const auto l = bary(Point<2>(p - V));
               for (unsigned int q = 0; q < 3; ++q)
                 AssertThrow(l[q] > -1e-10,
                             ExcMessage(
@@ -378,20 +382,29 @@ namespace psmpm
           const auto &       c     = ps_refinement.cell(index);
           CellData &         d     = cell_data[index];
 
-          const auto macro = Mesh::barycentric_map(c.vertices);
+          // Affine maps relative to the cell's first vertex keep their
+          // constants of order one whatever the cell's position.
+          d.origin                = c.vertices[0];
+          const auto to_local = [&d](const std::array<Point<2>, 3> &t) {
+            return std::array<Point<2>, 3>{{Point<2>(t[0] - d.origin),
+                                            Point<2>(t[1] - d.origin),
+                                            Point<2>(t[2] - d.origin)}};
+          };
+          const auto macro = Mesh::barycentric_map(to_local(c.vertices));
           for (unsigned int k = 0; k < 3; ++k)
             {
               d.macro[k][0]       = macro.constant[k];
               d.macro[k][1]       = macro.gradient[k][0];
               d.macro[k][2]       = macro.gradient[k][1];
               d.inverse_split[k]  = 1. / c.split_barycentric[k];
-              const Point<2> &R   = c.edge_points[k];
-              const Point<2> &Z   = c.split_point;
+              const Point<2>  R(c.edge_points[k] - d.origin);
+              const Point<2>  Z(c.split_point - d.origin);
+              const Point<2>  Vk(c.vertices[k] - d.origin);
               // s(x) = cross(Z - R, x - R), positive left of R->Z.
               const Tensor<1, 2> e = Z - R;
               double             a = -e[0] * R[1] + e[1] * R[0];
               double             gx = -e[1], gy = e[0];
-              if (a + gx * c.vertices[k][0] + gy * c.vertices[k][1] < 0)
+              if (a + gx * Vk[0] + gy * Vk[1] < 0)
                 {
                   a  = -a;
                   gx = -gx;
@@ -403,7 +416,8 @@ namespace psmpm
             }
           for (unsigned int s = 0; s < 6; ++s)
             {
-              const auto sub = Mesh::barycentric_map(c.sub_triangle(s));
+              const auto sub =
+                Mesh::barycentric_map(to_local(c.sub_triangle(s)));
               for (unsigned int k = 0; k < 3; ++k)
                 {
                   d.sub[s][k][0] = sub.constant[k];
@@ -485,7 +499,7 @@ namespace psmpm
                           Tensor<1, 2> *     gradients) const
     {
       const CellData &d = cell_data[cell];
-      const double    x = p[0], y = p[1];
+      const double    x = p[0] - d.origin[0], y = p[1] - d.origin[1];
 
       // The sub-triangle: the smallest lambda_k / zb_k names the vertex
       // opposite the macro edge whose two sub-triangles contain p, and the

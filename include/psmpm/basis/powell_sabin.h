@@ -160,10 +160,13 @@ namespace psmpm
 
       /**
        * Everything evaluate() reads for one cell, contiguous.
-       * An affine function is stored as (constant, d/dx, d/dy).
+       * An affine function is stored as (constant, d/dx, d/dy) of
+       * the coordinates relative to origin.
        */
       struct CellData
       {
+        /// All affine maps below take x - origin.
+        Point<2> origin;
         /// Barycentric coordinates of the macro triangle.
         double macro[3][3];
         /// 1 / barycentric coordinates of the incenter.
