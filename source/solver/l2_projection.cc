@@ -331,7 +331,7 @@ namespace psmpm
                 basis_dof = cell->vertex_dof_index(k, output_basis_function);
         }
 
-      if (Utilities::MPI::this_mpi_process(comm) != 0)
+      if (!write_output || Utilities::MPI::this_mpi_process(comm) != 0)
         return;
 
       // Output: piecewise quadratic C1 fields on a refined patch mesh.

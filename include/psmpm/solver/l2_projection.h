@@ -69,6 +69,8 @@ namespace psmpm
       /// Each sub-triangle is split into this many squared triangles for
       /// output (the pieces are quadratic: 4 shows their shape).
       unsigned int output_subdivisions = 4;
+      /// Write the VTU files (off for timing runs).
+      bool write_output = true;
     };
   } // namespace Solver
 } // namespace psmpm
