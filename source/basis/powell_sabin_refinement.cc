@@ -74,7 +74,12 @@ namespace psmpm
                 std::to_string(cell->active_cell_index()) +
                 (area <= 0 ? " is inverted or degenerate" :
                              " is too thin") +
-                " (area " + std::to_string(area) + "); its vertices: ";
+                " (area " + [area]() {
+                  std::ostringstream s;
+                  s.precision(3);
+                  s << area;
+                  return s.str();
+                }() + "); its vertices: ";
               for (unsigned int k = 0; k < 3; ++k)
                 msg += (k > 0 ? ", " : "") +
                        describe_vertex(cell->vertex_index(k), c.vertices[k]);
