@@ -4,7 +4,8 @@
 // reproduced from the library alone.
 //
 //   l2_projection_driver <linear|powell-sabin> <diagonal|criss-cross>
-//                        <blocks> <output directory> [lumped] [function]
+//                        <blocks> <output directory> [lumped|consistent]
+//                        [function] [basis function "vertex,q"]
 //
 // An output directory "-" writes no files: the wall time is then that of
 // mesh, space, assembly, solve and error alone.
@@ -31,7 +32,8 @@ main(int argc, char **argv)
     {
       std::cerr << "usage: " << argv[0]
                 << " <linear|powell-sabin> <diagonal|criss-cross> <blocks>"
-                   " <output directory> [lumped] [function]"
+                   " <output directory> [lumped|consistent] [function]"
+                   " [vertex,q]"
                 << std::endl;
       return 1;
     }
@@ -56,6 +58,14 @@ main(int argc, char **argv)
       projection.write_output = (output != "-");
       if (argc > 6)
         projection.function_expression = argv[6];
+      if (argc > 7)
+        {
+          const std::string pair  = argv[7];
+          const auto        comma = pair.find(',');
+          projection.output_basis_vertex = std::stoul(pair.substr(0, comma));
+          projection.output_basis_function =
+            std::stoul(pair.substr(comma + 1));
+        }
 
       psmpm::Postprocess::Summary summary;
       const auto start = std::chrono::steady_clock::now();
