@@ -2,6 +2,7 @@
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
 #include <psmpm/basis/linear.h>
+#include <psmpm/basis/powell_sabin.h>
 #include <psmpm/basis/space.h>
 
 namespace psmpm
@@ -28,9 +29,11 @@ namespace psmpm
     {
       if (name == "linear")
         return std::make_unique<Linear>();
+      if (name == "powell-sabin")
+        return std::make_unique<PowellSabin>();
       AssertThrow(false,
                   ExcMessage("Basis/Type = " + name +
-                             ": unknown basis (known: linear)."));
+                             ": unknown basis (known: linear, powell-sabin)."));
       return nullptr;
     }
   } // namespace Basis

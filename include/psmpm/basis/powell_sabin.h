@@ -1,0 +1,191 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_basis_powell_sabin_h
+#define psmpm_basis_powell_sabin_h
+
+#include <deal.II/fe/fe_system.h>
+
+#include <psmpm/basis/powell_sabin_refinement.h>
+#include <psmpm/basis/space.h>
+
+#include <array>
+#include <vector>
+
+namespace psmpm
+{
+  namespace Basis
+  {
+    /**
+     * Normalised quadratic Powell-Sabin B-splines: three C1 piecewise
+     * quadratic functions per mesh vertex, built exactly as in
+     * doc/powell_sabin.md and /work/shared/docs/powell-sabin-splines.md
+     * (incenter refinement, smallest boundary-aligned control triangles,
+     * triplets, Bezier ordinates on the six sub-triangles of every cell).
+     *
+     * The DoF layout is FESystem(FE_SimplexP(1), 3): local function 3k+q of
+     * a cell is function q of cell->vertex(k), i.e. the q-th component of
+     * the vertex's DoFs. Everything evaluation needs is precomputed per cell
+     * in one contiguous block, so evaluate() does no allocation and no
+     * search beyond three comparisons.
+     */
+    class PowellSabin : public Space
+    {
+    public:
+      /// How the control triangle of a vertex sits relative to the boundary.
+      enum class VertexKind
+      {
+        /// Interior vertex: smallest enclosing triangle.
+        interior,
+        /// Straight boundary: one side on the boundary line.
+        straight_boundary,
+        /// Convex corner: a control point at the vertex, two sides along
+        /// the boundary edges.
+        corner,
+        /// Reflex corner or non-manifold boundary vertex: no aligned
+        /// triangle exists; Dirichlet rows are imposed in general form.
+        unaligned_boundary
+      };
+
+      /// Value and gradient of one basis function at its own vertex.
+      struct Triplet
+      {
+        double       alpha;
+        Tensor<1, 2> gradient; // (beta, gamma)
+      };
+
+      PowellSabin();
+
+      std::string
+      name() const override;
+
+      const FiniteElement<2> &
+      dof_layout() const override;
+
+      /**
+       * Build the refinement, control triangles, triplets and Bezier
+       * ordinates. Throws ExcMessage naming the vertex (index and
+       * coordinates) if no valid, non-negative basis can be built there.
+       */
+      void
+      reinit(const DoFHandler<2> &dof_handler) override;
+
+      void
+      evaluate(const unsigned int cell,
+               const Point<2> &   p,
+               double *           values,
+               Tensor<1, 2> *     gradients) const override;
+
+      void
+      evaluate(const unsigned int  n,
+               const unsigned int *cells,
+               const Point<2> *    points,
+               double *            values,
+               Tensor<1, 2> *      gradients) const override;
+
+      /**
+       * Value and tangential derivative of u = g at every vertex of the
+       * boundaries @p ids (section 5 of the construction note); the
+       * tangential derivative of g is taken by a central difference along
+       * each boundary edge, because a Function's gradient() silently
+       * returns zero in release builds when it is not implemented.
+       */
+      void
+      make_dirichlet_constraints(
+        const DoFHandler<2> &               dof_handler,
+        const std::set<types::boundary_id> &ids,
+        const Function<2> &                 g,
+        AffineConstraints<double> &         constraints) const override;
+
+      /// @name Construction data, for tests and output.
+      /// @{
+      const PowellSabinRefinement &
+      refinement() const
+      {
+        return ps_refinement;
+      }
+
+      /// Control points Q_1, Q_2, Q_3 of vertex @p v (counter-clockwise).
+      const std::array<Point<2>, 3> &
+      control_triangle(const unsigned int v) const
+      {
+        return vertex_data[v].control_points;
+      }
+
+      const Triplet &
+      triplet(const unsigned int v, const unsigned int q) const
+      {
+        return vertex_data[v].triplets[q];
+      }
+
+      VertexKind
+      vertex_kind(const unsigned int v) const
+      {
+        return vertex_data[v].kind;
+      }
+
+      /// The PS points of vertex @p v that its control triangle contains.
+      const std::vector<Point<2>> &
+      ps_points(const unsigned int v) const
+      {
+        return vertex_ps_points[v];
+      }
+
+      /// The 19 Bezier points of a cell, numbered as the ordinates.
+      std::array<Point<2>, 19>
+      bezier_points(const unsigned int cell) const;
+
+      /// Bezier ordinate of local function @p i at Bezier point @p j.
+      double
+      ordinate(const unsigned int cell,
+               const unsigned int i,
+               const unsigned int j) const
+      {
+        return cell_data[cell].ordinates[j][i];
+      }
+      /// @}
+
+    private:
+      FESystem<2>           fe;
+      PowellSabinRefinement ps_refinement;
+
+      struct VertexData
+      {
+        VertexKind              kind = VertexKind::interior;
+        std::array<Point<2>, 3> control_points;
+        std::array<Triplet, 3>  triplets;
+      };
+      std::vector<VertexData>            vertex_data;
+      std::vector<std::vector<Point<2>>> vertex_ps_points;
+
+      /**
+       * Everything evaluate() reads for one cell, contiguous.
+       * An affine function is stored as (constant, d/dx, d/dy) of
+       * the coordinates relative to origin.
+       */
+      struct CellData
+      {
+        /// All affine maps below take x - origin.
+        Point<2> origin;
+        /// Barycentric coordinates of the macro triangle.
+        double macro[3][3];
+        /// 1 / barycentric coordinates of the incenter.
+        double inverse_split[3];
+        /// Line R_k Z, positive on the side of V_k.
+        double split_line[3][3];
+        /// Barycentric coordinates of the six sub-triangles.
+        double sub[6][3][3];
+        /// Bezier ordinates, point-major: ordinates[point][function].
+        double ordinates[19][9];
+      };
+      std::vector<CellData> cell_data;
+
+      void
+      build_control_triangles(const Triangulation<2> &tria);
+      void
+      build_cell_data(const Triangulation<2> &tria);
+    };
+  } // namespace Basis
+} // namespace psmpm
+
+#endif

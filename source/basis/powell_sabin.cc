@@ -1,0 +1,688 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/fe/fe_simplex_p.h>
+
+#include <psmpm/basis/powell_sabin.h>
+#include <psmpm/mesh/triangle_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace psmpm
+{
+  namespace Basis
+  {
+    namespace
+    {
+      /*
+       * Numbering of the 19 Bezier points of a macro triangle:
+       *   0-2    V_k
+       *   3-5    R_k (edge k from V_k to V_{k+1})
+       *   6      Z
+       *   7+2k   midpoint V_k R_k,  8+2k midpoint V_{k+1} R_k
+       *   13+k   midpoint V_k Z
+       *   16+k   midpoint R_k Z
+       * Sub-triangle 2k = (V_k, R_k, Z), 2k+1 = (R_k, V_{k+1}, Z); each row
+       * lists its Bezier points as (P1, P2, P3, mid P1P2, mid P2P3,
+       * mid P3P1).
+       */
+      constexpr unsigned int sub_triangle_points[6][6] = {
+        {0, 3, 6, 7, 16, 13},
+        {3, 1, 6, 8, 14, 16},
+        {1, 4, 6, 9, 17, 14},
+        {4, 2, 6, 10, 15, 17},
+        {2, 5, 6, 11, 18, 15},
+        {5, 0, 6, 12, 13, 18}};
+
+      std::string
+      describe_vertex(const unsigned int index, const Point<2> &p)
+      {
+        std::ostringstream s;
+        s.precision(17);
+        s << "vertex " << index << " at (" << p[0] << ", " << p[1] << ")";
+        return s.str();
+      }
+
+      double
+      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        return a[0] * b[1] - a[1] * b[0];
+      }
+
+      /// The half-plane n . x <= c (n a unit outward normal).
+      struct Line
+      {
+        Tensor<1, 2> normal;
+        double       c;
+      };
+
+      /**
+       * The triangle bounded by three half-planes, if it is bounded: that
+       * is the case when the outward normals positively span the plane,
+       * i.e. when the three cross products of consecutive normals have one
+       * sign.
+       */
+      bool
+      triangle_from_lines(const Line &             l1,
+                          const Line &             l2,
+                          const Line &             l3,
+                          std::array<Point<2>, 3> &triangle,
+                          double &                 area)
+      {
+        const double s12 = cross(l1.normal, l2.normal);
+        const double s23 = cross(l2.normal, l3.normal);
+        const double s31 = cross(l3.normal, l1.normal);
+        const double tol = 1e-10;
+        if (!((s12 > tol && s23 > tol && s31 > tol) ||
+              (s12 < -tol && s23 < -tol && s31 < -tol)))
+          return false;
+        const auto intersect = [](const Line &a, const Line &b) {
+          const double det = cross(a.normal, b.normal);
+          return Point<2>((a.c * b.normal[1] - b.c * a.normal[1]) / det,
+                          (a.normal[0] * b.c - b.normal[0] * a.c) / det);
+        };
+        triangle = {{intersect(l1, l2), intersect(l2, l3), intersect(l3, l1)}};
+        double a = Mesh::signed_area(triangle);
+        if (a < 0)
+          {
+            std::swap(triangle[1], triangle[2]);
+            a = -a;
+          }
+        area = a;
+        return true;
+      }
+
+      /// Convex hull, counter-clockwise, without collinear points.
+      std::vector<Point<2>>
+      convex_hull(std::vector<Point<2>> points, const double scale)
+      {
+        std::sort(points.begin(),
+                  points.end(),
+                  [](const Point<2> &a, const Point<2> &b) {
+                    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+                  });
+        const double          tol = 1e-12 * scale * scale;
+        std::vector<Point<2>> hull(2 * points.size());
+        std::size_t           k = 0;
+        for (std::size_t i = 0; i < points.size(); ++i)
+          {
+            while (k >= 2 &&
+                   cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <=
+                     tol)
+              --k;
+            hull[k++] = points[i];
+          }
+        for (std::size_t i = points.size() - 1, t = k + 1; i > 0; --i)
+          {
+            while (k >= t && cross(hull[k - 1] - hull[k - 2],
+                                   points[i - 1] - hull[k - 2]) <= tol)
+              --k;
+            hull[k++] = points[i - 1];
+          }
+        hull.resize(k > 0 ? k - 1 : 0);
+        return hull;
+      }
+
+      Tensor<1, 2>
+      outward_normal(const Point<2> &from, const Point<2> &to)
+      {
+        // Interior on the left of a counter-clockwise edge.
+        const Tensor<1, 2> e = to - from;
+        Tensor<1, 2>       n;
+        n[0] = e[1];
+        n[1] = -e[0];
+        return n / n.norm();
+      }
+
+      /**
+       * Smallest triangle that contains @p points among those whose sides
+       * lie on (a) the given fixed lines and (b) supporting lines through
+       * edges of the convex hull, or lines orthogonal to the bisector of two
+       * such lines, pushed out to the farthest point (construction note,
+       * section 2). Returns false if there is no such triangle.
+       */
+      bool
+      smallest_control_triangle(const std::vector<Point<2>> &points,
+                                const std::vector<Line> &    fixed,
+                                const double                 scale,
+                                std::array<Point<2>, 3> &    best)
+      {
+        const auto support = [&points](const Tensor<1, 2> &n) {
+          double c = -std::numeric_limits<double>::max();
+          for (const auto &p : points)
+            c = std::max(c, n * p);
+          return Line{n, c};
+        };
+        const auto bisector = [&support](const Line &a, const Line &b,
+                                         bool &ok) {
+          const Tensor<1, 2> d = -(a.normal + b.normal);
+          ok                   = d.norm() > 1e-10;
+          return support(ok ? d / d.norm() : d);
+        };
+
+        const auto         hull = convex_hull(points, scale);
+        std::vector<Line>  hull_lines;
+        for (std::size_t i = 0; i < hull.size(); ++i)
+          hull_lines.push_back(
+            support(outward_normal(hull[i], hull[(i + 1) % hull.size()])));
+
+        double                  best_area = std::numeric_limits<double>::max();
+        std::array<Point<2>, 3> t;
+        double                  area;
+        const auto              consider = [&](const Line &a,
+                                  const Line &b,
+                                  const Line &c) {
+          // Strict improvement only, so the first of equal candidates wins
+          // and the choice is deterministic.
+          if (triangle_from_lines(a, b, c, t, area) &&
+              area < best_area * (1 - 1e-12))
+            {
+              best_area = area;
+              best      = t;
+            }
+        };
+        const auto consider_with_bisector = [&](const Line &a, const Line &b) {
+          bool       ok;
+          const Line c = bisector(a, b, ok);
+          if (ok)
+            consider(a, b, c);
+        };
+
+        const std::size_t n = hull_lines.size();
+        if (fixed.size() == 2)
+          {
+            for (std::size_t i = 0; i < n; ++i)
+              consider(fixed[0], fixed[1], hull_lines[i]);
+            consider_with_bisector(fixed[0], fixed[1]);
+          }
+        else if (fixed.size() == 1)
+          for (std::size_t i = 0; i < n; ++i)
+            {
+              consider_with_bisector(fixed[0], hull_lines[i]);
+              for (std::size_t j = i + 1; j < n; ++j)
+                consider(fixed[0], hull_lines[i], hull_lines[j]);
+            }
+        else
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+              {
+                consider_with_bisector(hull_lines[i], hull_lines[j]);
+                for (std::size_t k = j + 1; k < n; ++k)
+                  consider(hull_lines[i], hull_lines[j], hull_lines[k]);
+              }
+        return best_area < std::numeric_limits<double>::max();
+      }
+    } // namespace
+
+    PowellSabin::PowellSabin()
+      : fe(FE_SimplexP<2>(1), 3)
+    {}
+
+    std::string
+    PowellSabin::name() const
+    {
+      return "powell-sabin";
+    }
+
+    const FiniteElement<2> &
+    PowellSabin::dof_layout() const
+    {
+      return fe;
+    }
+
+    void
+    PowellSabin::reinit(const DoFHandler<2> &dof_handler)
+    {
+      AssertThrow(dof_handler.get_fe().n_dofs_per_vertex() == 3 &&
+                    dof_handler.get_fe().n_dofs_per_cell() == 9,
+                  ExcMessage("PowellSabin::reinit: the DoFHandler must use "
+                             "the space's dof_layout()."));
+      const auto &tria = dof_handler.get_triangulation();
+      ps_refinement.reinit(tria);
+      build_control_triangles(tria);
+      build_cell_data(tria);
+    }
+
+    void
+    PowellSabin::build_control_triangles(const Triangulation<2> &tria)
+    {
+      const unsigned int n_vertices = tria.n_vertices();
+      vertex_data.assign(n_vertices, VertexData());
+      vertex_ps_points.assign(n_vertices, {});
+
+      // Boundary edges oriented with the interior on their left: the one
+      // arriving at and the one leaving each boundary vertex.
+      std::vector<std::vector<Point<2>>> arriving_from(n_vertices),
+        leaving_to(n_vertices);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const auto &c = ps_refinement.cell(cell->active_cell_index());
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              const unsigned int v    = cell->vertex_index(k);
+              const Point<2> &   V    = c.vertices[k];
+              auto &             list = vertex_ps_points[v];
+              if (list.empty())
+                list.push_back(V);
+              list.push_back(0.5 * (V + c.split_point));
+              list.push_back(0.5 * (V + c.edge_points[k]));
+              list.push_back(0.5 * (V + c.edge_points[(k + 2) % 3]));
+            }
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              for (unsigned int k = 0; k < 3; ++k)
+                {
+                  const unsigned int a = cell->vertex_index(k),
+                                     b = cell->vertex_index((k + 1) % 3);
+                  const auto face = cell->face(f);
+                  if ((face->vertex_index(0) == a &&
+                       face->vertex_index(1) == b) ||
+                      (face->vertex_index(0) == b &&
+                       face->vertex_index(1) == a))
+                    {
+                      leaving_to[a].push_back(cell->vertex((k + 1) % 3));
+                      arriving_from[b].push_back(cell->vertex(k));
+                    }
+                }
+        }
+
+      const std::vector<bool> &used = tria.get_used_vertices();
+      const auto &             vertices = tria.get_vertices();
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          auto &points = vertex_ps_points[v];
+          if (!used[v] || points.empty())
+            continue;
+          const Point<2> &V     = vertices[v];
+          double          scale = 0;
+          for (const auto &p : points)
+            scale = std::max(scale, p.distance(V));
+
+          VertexData &      data = vertex_data[v];
+          std::vector<Line> fixed;
+          if (arriving_from[v].empty() && leaving_to[v].empty())
+            data.kind = VertexKind::interior;
+          else if (arriving_from[v].size() == 1 && leaving_to[v].size() == 1)
+            {
+              const Point<2> &   W1 = arriving_from[v][0];
+              const Point<2> &   W2 = leaving_to[v][0];
+              const Tensor<1, 2> n1 = outward_normal(W1, V);
+              const Tensor<1, 2> n2 = outward_normal(V, W2);
+              const double       turn =
+                cross(V - W1, W2 - V) / ((V - W1).norm() * (W2 - V).norm());
+              if (std::abs(turn) <= 1e-10)
+                {
+                  data.kind                = VertexKind::straight_boundary;
+                  const Tensor<1, 2> n     = (n1 + n2) / (n1 + n2).norm();
+                  fixed.push_back(Line{n, n * V});
+                }
+              else if (turn > 0)
+                {
+                  data.kind = VertexKind::corner;
+                  fixed.push_back(Line{n1, n1 * V});
+                  fixed.push_back(Line{n2, n2 * V});
+                }
+              else
+                data.kind = VertexKind::unaligned_boundary;
+            }
+          else
+            data.kind = VertexKind::unaligned_boundary;
+
+          const bool found =
+            smallest_control_triangle(points, fixed, scale, data.control_points);
+          AssertThrow(found,
+                      ExcMessage("Powell-Sabin: no control triangle contains "
+                                 "the PS points of " +
+                                 describe_vertex(v, V) + "."));
+
+          // The triplets: value and gradient at V of the linear functions
+          // that are 1 at one control point and 0 at the other two.
+          const double area = Mesh::signed_area(data.control_points);
+          AssertThrow(area > 1e-12 * scale * scale,
+                      ExcMessage("Powell-Sabin: degenerate control triangle "
+                                 "at " +
+                                 describe_vertex(v, V) + "."));
+          // Relative to V: in absolute coordinates the constant of the
+          // map is of size |V|/h and cancellation would cost digits.
+          std::array<Point<2>, 3> local;
+          for (unsigned int q = 0; q < 3; ++q)
+            local[q] = Point<2>(data.control_points[q] - V);
+          const auto bary = Mesh::barycentric_map(local);
+          for (unsigned int q = 0; q < 3; ++q)
+            data.triplets[q] = Triplet{bary.constant[q], bary.gradient[q]};
+
+          // Non-negativity of the basis is equivalent to every PS point
+          // lying in the control triangle: check it rather than trust the
+          // geometry of a sliver.
+          for (const auto &p : points)
+            {
+              const auto l = bary(Point<2>(p - V));
+              for (unsigned int q = 0; q < 3; ++q)
+                AssertThrow(l[q] > -1e-10,
+                            ExcMessage(
+                              "Powell-Sabin: the control triangle of " +
+                              describe_vertex(v, V) +
+                              " does not contain all its PS points; the "
+                              "basis would not be non-negative."));
+            }
+        }
+    }
+
+    void
+    PowellSabin::build_cell_data(const Triangulation<2> &tria)
+    {
+      cell_data.resize(tria.n_active_cells());
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const unsigned int index = cell->active_cell_index();
+          const auto &       c     = ps_refinement.cell(index);
+          CellData &         d     = cell_data[index];
+
+          // Affine maps relative to the cell's first vertex keep their
+          // constants of order one whatever the cell's position.
+          d.origin                = c.vertices[0];
+          const auto to_local = [&d](const std::array<Point<2>, 3> &t) {
+            return std::array<Point<2>, 3>{{Point<2>(t[0] - d.origin),
+                                            Point<2>(t[1] - d.origin),
+                                            Point<2>(t[2] - d.origin)}};
+          };
+          const auto macro = Mesh::barycentric_map(to_local(c.vertices));
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              d.macro[k][0]       = macro.constant[k];
+              d.macro[k][1]       = macro.gradient[k][0];
+              d.macro[k][2]       = macro.gradient[k][1];
+              d.inverse_split[k]  = 1. / c.split_barycentric[k];
+              const Point<2>  R(c.edge_points[k] - d.origin);
+              const Point<2>  Z(c.split_point - d.origin);
+              const Point<2>  Vk(c.vertices[k] - d.origin);
+              // s(x) = cross(Z - R, x - R), positive left of R->Z.
+              const Tensor<1, 2> e = Z - R;
+              double             a = -e[0] * R[1] + e[1] * R[0];
+              double             gx = -e[1], gy = e[0];
+              if (a + gx * Vk[0] + gy * Vk[1] < 0)
+                {
+                  a  = -a;
+                  gx = -gx;
+                  gy = -gy;
+                }
+              d.split_line[k][0] = a;
+              d.split_line[k][1] = gx;
+              d.split_line[k][2] = gy;
+            }
+          for (unsigned int s = 0; s < 6; ++s)
+            {
+              const auto sub =
+                Mesh::barycentric_map(to_local(c.sub_triangle(s)));
+              for (unsigned int k = 0; k < 3; ++k)
+                {
+                  d.sub[s][k][0] = sub.constant[k];
+                  d.sub[s][k][1] = sub.gradient[k][0];
+                  d.sub[s][k][2] = sub.gradient[k][1];
+                }
+            }
+
+          // Ordinates (construction note, section 4): function 3k+q is the
+          // PS Hermite interpolant of value alpha_q and gradient
+          // (beta_q, gamma_q) at V_k and zero data at the other vertices.
+          for (unsigned int j = 0; j < 19; ++j)
+            for (unsigned int i = 0; i < 9; ++i)
+              d.ordinates[j][i] = 0;
+          const Point<2> &Z = c.split_point;
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              const unsigned int km1 = (k + 2) % 3; // edge k-1 ends at V_k
+              const Point<2> &   V   = c.vertices[k];
+              const auto &       vd  = vertex_data[cell->vertex_index(k)];
+              for (unsigned int q = 0; q < 3; ++q)
+                {
+                  const unsigned int i = 3 * k + q;
+                  const Triplet &    t = vd.triplets[q];
+                  const auto T = [&](const Point<2> &P) {
+                    return t.alpha + 0.5 * (t.gradient * (P - V));
+                  };
+                  const double w_next = c.edge_weights[k][0]; // V_k in R_k
+                  const double w_prev = c.edge_weights[km1][1]; // in R_{k-1}
+                  d.ordinates[k][i]           = t.alpha;
+                  d.ordinates[7 + 2 * k][i]   = T(c.edge_points[k]);
+                  d.ordinates[8 + 2 * km1][i] = T(c.edge_points[km1]);
+                  d.ordinates[13 + k][i]      = T(Z);
+                  d.ordinates[3 + k][i]       = w_next * T(c.edge_points[k]);
+                  d.ordinates[3 + km1][i] = w_prev * T(c.edge_points[km1]);
+                  d.ordinates[16 + k][i]      = w_next * T(Z);
+                  d.ordinates[16 + km1][i]    = w_prev * T(Z);
+                  d.ordinates[6][i] = c.split_barycentric[k] * T(Z);
+                }
+            }
+
+          // A Bezier form with non-negative ordinates is non-negative; with
+          // every PS point in its control triangle they all are.
+          for (unsigned int j = 0; j < 19; ++j)
+            for (unsigned int i = 0; i < 9; ++i)
+              AssertThrow(
+                d.ordinates[j][i] > -1e-10,
+                ExcMessage("Powell-Sabin: negative Bezier ordinate of a "
+                           "basis function of " +
+                           describe_vertex(cell->vertex_index(i / 3),
+                                           cell->vertex(i / 3)) +
+                           " in cell " + std::to_string(index) + "."));
+        }
+    }
+
+    std::array<Point<2>, 19>
+    PowellSabin::bezier_points(const unsigned int cell) const
+    {
+      const auto &             c = ps_refinement.cell(cell);
+      std::array<Point<2>, 19> p;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const Point<2> &V = c.vertices[k];
+          p[k]              = V;
+          p[3 + k]          = c.edge_points[k];
+          p[7 + 2 * k]      = 0.5 * (V + c.edge_points[k]);
+          p[8 + 2 * k] = 0.5 * (c.vertices[(k + 1) % 3] + c.edge_points[k]);
+          p[13 + k]    = 0.5 * (V + c.split_point);
+          p[16 + k]    = 0.5 * (c.edge_points[k] + c.split_point);
+        }
+      p[6] = c.split_point;
+      return p;
+    }
+
+    void
+    PowellSabin::evaluate(const unsigned int cell,
+                          const Point<2> &   p,
+                          double *           values,
+                          Tensor<1, 2> *     gradients) const
+    {
+      const CellData &d = cell_data[cell];
+      const double    x = p[0] - d.origin[0], y = p[1] - d.origin[1];
+
+      // The sub-triangle: the smallest lambda_k / zb_k names the vertex
+      // opposite the macro edge whose two sub-triangles contain p, and the
+      // line R Z splits those two.
+      double r[3];
+      for (unsigned int k = 0; k < 3; ++k)
+        r[k] = (d.macro[k][0] + d.macro[k][1] * x + d.macro[k][2] * y) *
+               d.inverse_split[k];
+      const unsigned int m =
+        (r[0] <= r[1]) ? (r[0] <= r[2] ? 0 : 2) : (r[1] <= r[2] ? 1 : 2);
+      const unsigned int edge = (m + 1) % 3;
+      const double *     sl   = d.split_line[edge];
+      const unsigned int s    = 2 * edge + (sl[0] + sl[1] * x + sl[2] * y >= 0 ? 0 : 1);
+
+      double l[3], gl[3][2];
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          l[k]     = d.sub[s][k][0] + d.sub[s][k][1] * x + d.sub[s][k][2] * y;
+          gl[k][0] = d.sub[s][k][1];
+          gl[k][1] = d.sub[s][k][2];
+        }
+      // Quadratic Bernstein polynomials l1^2, l2^2, l3^2, 2 l1 l2, 2 l2 l3,
+      // 2 l3 l1 and their gradients.
+      const double b[6] = {l[0] * l[0],
+                           l[1] * l[1],
+                           l[2] * l[2],
+                           2 * l[0] * l[1],
+                           2 * l[1] * l[2],
+                           2 * l[2] * l[0]};
+      const unsigned int *idx = sub_triangle_points[s];
+      const double *      o0 = d.ordinates[idx[0]], *o1 = d.ordinates[idx[1]],
+                   *o2 = d.ordinates[idx[2]], *o3 = d.ordinates[idx[3]],
+                   *o4 = d.ordinates[idx[4]], *o5 = d.ordinates[idx[5]];
+      for (unsigned int i = 0; i < 9; ++i)
+        values[i] = b[0] * o0[i] + b[1] * o1[i] + b[2] * o2[i] +
+                    b[3] * o3[i] + b[4] * o4[i] + b[5] * o5[i];
+      if (gradients != nullptr)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            const double db[6] = {2 * l[0] * gl[0][c],
+                                  2 * l[1] * gl[1][c],
+                                  2 * l[2] * gl[2][c],
+                                  2 * (gl[0][c] * l[1] + l[0] * gl[1][c]),
+                                  2 * (gl[1][c] * l[2] + l[1] * gl[2][c]),
+                                  2 * (gl[2][c] * l[0] + l[2] * gl[0][c])};
+            for (unsigned int i = 0; i < 9; ++i)
+              gradients[i][c] = db[0] * o0[i] + db[1] * o1[i] +
+                                db[2] * o2[i] + db[3] * o3[i] +
+                                db[4] * o4[i] + db[5] * o5[i];
+          }
+    }
+
+    void
+    PowellSabin::evaluate(const unsigned int  n,
+                          const unsigned int *cells,
+                          const Point<2> *    points,
+                          double *            values,
+                          Tensor<1, 2> *      gradients) const
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        PowellSabin::evaluate(cells[i],
+                              points[i],
+                              values + 9 * i,
+                              gradients != nullptr ? gradients + 9 * i :
+                                                     nullptr);
+    }
+
+    void
+    PowellSabin::make_dirichlet_constraints(
+      const DoFHandler<2> &               dof_handler,
+      const std::set<types::boundary_id> &ids,
+      const Function<2> &                 g,
+      AffineConstraints<double> &         constraints) const
+    {
+      // Per constrained vertex: its three DoFs and the rows
+      // (coefficients on c_0..c_2, right-hand side).
+      struct VertexRows
+      {
+        std::array<types::global_dof_index, 3> dofs;
+        std::vector<std::array<double, 4>>     rows;
+      };
+      std::map<unsigned int, VertexRows> vertex_rows;
+
+      std::vector<types::global_dof_index> dofs(9);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (cell->is_artificial())
+            continue;
+          cell->get_dof_indices(dofs);
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                ids.count(cell->face(f)->boundary_id()) > 0)
+              {
+                const auto         face = cell->face(f);
+                const Point<2>     A = face->vertex(0), B = face->vertex(1);
+                const double       length = A.distance(B);
+                const Tensor<1, 2> t      = (B - A) / length;
+                // Central difference along the edge: step cbrt(eps) balances
+                // truncation and round-off.
+                const double h = 6e-6 * length;
+                for (unsigned int k = 0; k < 3; ++k)
+                  for (const auto fv : face->vertex_indices())
+                    if (cell->vertex_index(k) == face->vertex_index(fv))
+                      {
+                        const unsigned int v  = cell->vertex_index(k);
+                        const Point<2> &   V  = cell->vertex(k);
+                        const auto &       vd = vertex_data[v];
+                        VertexRows &       r  = vertex_rows[v];
+                        for (unsigned int q = 0; q < 3; ++q)
+                          r.dofs[q] = dofs[3 * k + q];
+                        if (r.rows.empty())
+                          r.rows.push_back({{vd.triplets[0].alpha,
+                                             vd.triplets[1].alpha,
+                                             vd.triplets[2].alpha,
+                                             g.value(V)}});
+                        const double dgdt =
+                          (g.value(V + h * t) - g.value(V - h * t)) / (2 * h);
+                        r.rows.push_back({{vd.triplets[0].gradient * t,
+                                           vd.triplets[1].gradient * t,
+                                           vd.triplets[2].gradient * t,
+                                           dgdt}});
+                      }
+              }
+        }
+
+      for (auto &entry : vertex_rows)
+        {
+          VertexRows &r = entry.second;
+          // Scale rows so that one rank tolerance fits values and
+          // derivatives alike.
+          for (auto &row : r.rows)
+            {
+              const double s = std::max(
+                {std::abs(row[0]), std::abs(row[1]), std::abs(row[2])});
+              for (auto &x : row)
+                x /= s;
+            }
+          // Gauss-Jordan elimination with full pivoting on the m x 3 system.
+          std::array<unsigned int, 3> column = {{0, 1, 2}};
+          unsigned int                rank   = 0;
+          auto &                      M      = r.rows;
+          for (; rank < std::min<std::size_t>(3, M.size()); ++rank)
+            {
+              unsigned int pi = rank, pj = rank;
+              for (unsigned int i = rank; i < M.size(); ++i)
+                for (unsigned int j = rank; j < 3; ++j)
+                  if (std::abs(M[i][column[j]]) > std::abs(M[pi][column[pj]]))
+                    {
+                      pi = i;
+                      pj = j;
+                    }
+              if (std::abs(M[pi][column[pj]]) < 1e-10)
+                break;
+              std::swap(M[rank], M[pi]);
+              std::swap(column[rank], column[pj]);
+              const double p = M[rank][column[rank]];
+              for (auto &x : M[rank])
+                x /= p;
+              for (unsigned int i = 0; i < M.size(); ++i)
+                if (i != rank)
+                  {
+                    const double f = M[i][column[rank]];
+                    for (unsigned int j = 0; j < 4; ++j)
+                      M[i][j] -= f * M[rank][j];
+                  }
+            }
+          // c_{column[i]} = rhs_i - sum_{free j} M[i][j] c_j for i < rank.
+          for (unsigned int i = 0; i < rank; ++i)
+            {
+              const auto dof = r.dofs[column[i]];
+              if (!constraints.can_store_line(dof) ||
+                  constraints.is_constrained(dof))
+                continue;
+              constraints.add_line(dof);
+              for (unsigned int j = rank; j < 3; ++j)
+                if (std::abs(M[i][column[j]]) > 1e-12)
+                  constraints.add_entry(dof,
+                                        r.dofs[column[j]],
+                                        -M[i][column[j]]);
+              if (std::abs(M[i][3]) > 1e-14)
+                constraints.set_inhomogeneity(dof, M[i][3]);
+            }
+        }
+    }
+  } // namespace Basis
+} // namespace psmpm
