@@ -7,6 +7,7 @@
 
 #include <psmpm/app/application.h>
 #include <psmpm/postprocess/summary.h>
+#include <psmpm/solver/l2_projection.h>
 #include <psmpm/solver/mpm_solver.h>
 
 #include <filesystem>
@@ -228,9 +229,11 @@ end
       prm.leave_subsection();
       prm.declare_entry("Problem",
                         "mpm",
-                        Patterns::Selection("mpm"),
-                        "mpm: material point simulation.");
+                        Patterns::Selection("mpm|l2 projection"),
+                        "mpm: material point simulation; l2 projection: "
+                        "project Projection/Function onto the basis.");
       Solver::MPMSolver::declare_parameters(prm);
+      Solver::L2Projection::declare_parameters(prm);
     }
 
     int
@@ -243,7 +246,10 @@ end
       CommandLine      cl;
       ParameterHandler prm;
       declare_parameters(prm);
-      Solver::MPMSolver solver(comm);
+      Solver::MPMSolver    solver(comm);
+      Mesh::MeshGenerator  mesh;
+      Solver::L2Projection projection;
+      std::string          problem, basis;
       std::string       where = "the command line";
       try
         {
@@ -274,8 +280,20 @@ end
           for (const auto &o : cl.overrides)
             apply_override(prm, o);
           resolve_mesh_file(prm, cl.prm_file);
-          solver.parse_parameters(prm);
-          solver.setup();
+          problem = prm.get("Problem");
+          if (problem == "mpm")
+            {
+              solver.parse_parameters(prm);
+              solver.setup();
+            }
+          else
+            {
+              mesh.parse_parameters(prm);
+              projection.parse_parameters(prm);
+              prm.enter_subsection("Basis");
+              basis = prm.get("Type");
+              prm.leave_subsection();
+            }
         }
       catch (const std::bad_alloc &)
         {
@@ -312,10 +330,19 @@ end
           prm.enter_subsection("Output");
           const bool test_output = prm.get_bool("Test output");
           prm.leave_subsection();
-          solver.quiet                = test_output;
-          const auto           status = solver.run(dir);
+          solver.quiet = test_output;
           Postprocess::Summary summary;
-          solver.fill_summary(summary);
+          auto status = Solver::MPMSolver::Status::completed;
+          if (problem == "mpm")
+            {
+              status = solver.run(dir);
+              solver.fill_summary(summary);
+            }
+          else
+            {
+              projection.run(mesh, basis, dir, summary, comm);
+              summary.set("status", "completed");
+            }
           summary.set("wall_time_s", wall.wall_time());
           summary.set("parameter_file",
                       cl.prm_file.empty() ? "(default scene)" : cl.prm_file);
