@@ -595,10 +595,12 @@ namespace psmpm
         {
           reference.advance_to(time);
           const bool last = !(time < end_time * (1 - 1e-12));
-          Errors     err{std::nan(""), std::nan(""), std::nan("")};
           if (n % error_interval == 0 || last)
             {
-              err = compute_errors();
+              const Errors err = compute_errors();
+              statistics.add_value("displacement_L2", err.displacement);
+              statistics.add_value("velocity_L2", err.velocity);
+              statistics.add_value("stress_L2", err.stress);
               error_history.max_displacement =
                 std::max(error_history.max_displacement, err.displacement);
               error_history.sum_displacement2 +=
@@ -606,9 +608,9 @@ namespace psmpm
               error_history.sum_velocity2 += err.velocity * err.velocity;
               ++error_history.n;
             }
-          statistics.add_value("displacement_L2", err.displacement);
-          statistics.add_value("velocity_L2", err.velocity);
-          statistics.add_value("stress_L2", err.stress);
+          else // "-": not computed at this step (see Output/Error interval)
+            for (const auto &c : {"displacement_L2", "velocity_L2", "stress_L2"})
+              statistics.add_value(c, std::string("-"));
           if (track)
             record_tracked_particle();
         }
