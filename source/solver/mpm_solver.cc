@@ -149,6 +149,9 @@ namespace psmpm
       particle_generator.parse_parameters(prm);
       material.parse_parameters(prm);
       grid_parameters.parse_parameters(prm);
+      prm.enter_subsection("Mass matrix");
+      mass_type_name = prm.get("Type");
+      prm.leave_subsection();
 
       prm.enter_subsection("Basis");
       basis_name = prm.get("Type");
@@ -236,7 +239,7 @@ namespace psmpm
                                           *space,
                                           dof_handler,
                                           comm);
-      grid->reinit(fixed);
+      grid->reinit(fixed, material.density);
 
       // Time step: the p-wave must not cross the smallest triangle height
       // in one step (thesis eq. 2.48 with the p-wave speed).
@@ -586,6 +589,11 @@ namespace psmpm
       statistics.add_value("momentum_x", e.momentum[0]);
       statistics.add_value("momentum_y", e.momentum[1]);
       statistics.add_value("cg_iterations", grid->statistics().iterations);
+      statistics.add_value("condition_number",
+                           grid->statistics().condition_number);
+      statistics.add_value("min_relative_diagonal",
+                           grid->statistics().min_relative_diagonal);
+      statistics.add_value("treated_dofs", grid->statistics().n_treated_dofs);
       statistics.add_value("mass_diag_ratio",
                            grid->statistics().max_diagonal > 0 ?
                              grid->statistics().min_diagonal /
@@ -721,6 +729,8 @@ namespace psmpm
                                 "momentum_x",
                                 "momentum_y",
                                 "mass_diag_ratio",
+                                "condition_number",
+                                "min_relative_diagonal",
                                 "wall_time"})
             {
               statistics.set_scientific(c, true);
@@ -814,10 +824,7 @@ namespace psmpm
       summary.set("end_time", time);
       summary.set("time_step", time_step);
       summary.set("basis", space->name());
-      summary.set("mass_matrix",
-                  grid_parameters.type == GridSystem::MassType::consistent ?
-                    "consistent" :
-                    "lumped");
+      summary.set("mass_matrix", mass_type_name);
       if (reference.exists())
         {
           const Errors e = compute_errors();

@@ -161,6 +161,7 @@ namespace psmpm
       Postprocess::ReferenceSolution          reference;
       GridSystem::Parameters                  grid_parameters;
       std::string                             basis_name;
+      std::string                             mass_type_name;
       std::string                             velocity_expression;
       std::string                             velocity_constants;
       Tensor<1, 2>                            gravity;
