@@ -12,9 +12,9 @@ namespace psmpm
     void
     Space::evaluate(const unsigned int  n,
                     const unsigned int *cells,
-                    const Point<2> *    points,
-                    double *            values,
-                    Tensor<1, 2> *      gradients) const
+                    const Point<2>     *points,
+                    double             *values,
+                    Tensor<1, 2>       *gradients) const
     {
       const unsigned int n_dofs = dofs_per_cell();
       for (unsigned int i = 0; i < n; ++i)

@@ -53,9 +53,9 @@ namespace psmpm
        */
       void
       run(const Mesh::MeshGenerator &mesh,
-          const std::string &        basis_name,
-          const std::string &        output_directory,
-          Postprocess::Summary &     summary,
+          const std::string         &basis_name,
+          const std::string         &output_directory,
+          Postprocess::Summary      &summary,
           MPI_Comm                   comm);
 
       /// "sin(pi*x)*sin(pi*y)" by default; variables x, y; constant pi.
