@@ -498,6 +498,7 @@ namespace psmpm
                           double            *values,
                           Tensor<1, 2>      *gradients) const
     {
+      AssertIndexRange(cell, cell_data.size());
       const CellData &d = cell_data[cell];
       const double    x = p[0] - d.origin[0], y = p[1] - d.origin[1];
 
@@ -601,6 +602,10 @@ namespace psmpm
         std::vector<std::array<double, 4>>     rows;
       };
       std::map<unsigned int, VertexRows> vertex_rows;
+      AssertThrow(vertex_data.size() ==
+                    dof_handler.get_triangulation().n_vertices(),
+                  ExcMessage("PowellSabin::make_dirichlet_constraints: call "
+                             "reinit() with this mesh first."));
 
       std::vector<types::global_dof_index> dofs(9);
       for (const auto &cell : dof_handler.active_cell_iterators())

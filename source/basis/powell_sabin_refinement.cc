@@ -119,6 +119,14 @@ namespace psmpm
                     f = g;
                 }
               Assert(f != numbers::invalid_unsigned_int, ExcInternalError());
+              // Edge points need one neighbour per edge: no hanging nodes.
+              AssertThrow(cell->at_boundary(f) ||
+                            (!cell->neighbor(f)->has_children() &&
+                             cell->neighbor(f)->level() == cell->level()),
+                          ExcMessage("Powell-Sabin splines need a conforming "
+                                     "mesh without hanging nodes; cell " +
+                                     std::to_string(cell->active_cell_index()) +
+                                     " has a refined or coarser neighbour."));
               const auto face = cell->face(f);
               FacePoint &fp   = face_points[face->index()];
               if (!fp.computed)

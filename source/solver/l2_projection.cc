@@ -20,6 +20,7 @@
 #include <psmpm/solver/l2_projection.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -103,9 +104,7 @@ namespace psmpm
         for (unsigned int i = 0; i < patches.size(); ++i)
           patches[i].patch_index = i;
         std::ofstream out(filename);
-        AssertThrow(out.good(),
-                    ExcMessage("Cannot write " + filename +
-                               " (does the output directory exist?)."));
+        AssertThrow(out.good(), ExcMessage("Cannot write " + filename + "."));
         DataOutBase::write_vtu(
           patches,
           names,
@@ -332,6 +331,7 @@ namespace psmpm
 
       if (!write_output || Utilities::MPI::this_mpi_process(comm) != 0)
         return;
+      std::filesystem::create_directories(output_directory);
 
       // Output: piecewise quadratic C1 fields on a refined patch mesh.
       std::vector<std::string> names = {"projection", "exact", "error"};
