@@ -13,11 +13,11 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 
-#include <benchmark/benchmark.h>
 #include <psmpm/basis/space.h>
 #include <psmpm/mesh/mesh_generator.h>
 
 #include <algorithm>
+#include <benchmark/benchmark.h>
 #include <memory>
 #include <random>
 #include <vector>
@@ -28,11 +28,11 @@ namespace
 
   struct Setup
   {
-    Triangulation<2>                    tria;
-    std::unique_ptr<DoFHandler<2>>      dof_handler;
+    Triangulation<2>                     tria;
+    std::unique_ptr<DoFHandler<2>>       dof_handler;
     std::unique_ptr<psmpm::Basis::Space> space;
-    std::vector<unsigned int>           cells;
-    std::vector<Point<2>>               points;
+    std::vector<unsigned int>            cells;
+    std::vector<Point<2>>                points;
 
     Setup(const std::string &name,
           const unsigned int n_points,
@@ -54,7 +54,8 @@ namespace
       std::uniform_real_distribution<double> u(0, 1);
       std::vector<std::array<Point<2>, 3>>   vertices;
       for (const auto &cell : tria.active_cell_iterators())
-        vertices.push_back({{cell->vertex(0), cell->vertex(1), cell->vertex(2)}});
+        vertices.push_back(
+          {{cell->vertex(0), cell->vertex(1), cell->vertex(2)}});
       for (unsigned int i = 0; i < n_points; ++i)
         {
           const unsigned int c = rng() % vertices.size();
@@ -116,7 +117,7 @@ namespace
   }
 
   void
-  evaluate_batch(benchmark::State & state,
+  evaluate_batch(benchmark::State  &state,
                  const std::string &name,
                  const bool         sorted)
   {

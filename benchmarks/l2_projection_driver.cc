@@ -45,30 +45,29 @@ main(int argc, char **argv)
       const std::string  output = argv[4];
 
       psmpm::Mesh::MeshGenerator mesh;
-      mesh.type     = (type == "diagonal" ?
-                         psmpm::Mesh::MeshGenerator::Type::diagonal :
-                         psmpm::Mesh::MeshGenerator::Type::criss_cross);
+      mesh.type =
+        (type == "diagonal" ? psmpm::Mesh::MeshGenerator::Type::diagonal :
+                              psmpm::Mesh::MeshGenerator::Type::criss_cross);
       mesh.length   = 1;
       mesh.height   = 1;
       mesh.blocks_x = blocks;
       mesh.blocks_y = blocks;
 
       psmpm::Solver::L2Projection projection;
-      projection.lumped = (argc > 5 && std::string(argv[5]) == "lumped");
+      projection.lumped       = (argc > 5 && std::string(argv[5]) == "lumped");
       projection.write_output = (output != "-");
       if (argc > 6)
         projection.function_expression = argv[6];
       if (argc > 7)
         {
-          const std::string pair  = argv[7];
-          const auto        comma = pair.find(',');
-          projection.output_basis_vertex = std::stoul(pair.substr(0, comma));
-          projection.output_basis_function =
-            std::stoul(pair.substr(comma + 1));
+          const std::string pair           = argv[7];
+          const auto        comma          = pair.find(',');
+          projection.output_basis_vertex   = std::stoul(pair.substr(0, comma));
+          projection.output_basis_function = std::stoul(pair.substr(comma + 1));
         }
 
       psmpm::Postprocess::Summary summary;
-      const auto start = std::chrono::steady_clock::now();
+      const auto                  start = std::chrono::steady_clock::now();
       projection.run(mesh, basis, output, summary, MPI_COMM_WORLD);
       const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

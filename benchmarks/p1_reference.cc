@@ -74,8 +74,12 @@ main(int argc, char **argv)
 
       Vector<double> projection(dof_handler.n_dofs()),
         interpolation(dof_handler.n_dofs());
-      VectorTools::project(
-        mapping, dof_handler, constraints, assembly_rule, u, projection);
+      VectorTools::project(mapping,
+                           dof_handler,
+                           constraints,
+                           assembly_rule,
+                           u,
+                           projection);
       VectorTools::interpolate(mapping, dof_handler, u, interpolation);
 
       // QGaussSimplex<2>(n) exists for n <= 4 in deal.II 9.4.1 (larger n

@@ -67,11 +67,11 @@ namespace psmpm
        * sign.
        */
       bool
-      triangle_from_lines(const Line &             l1,
-                          const Line &             l2,
-                          const Line &             l3,
+      triangle_from_lines(const Line              &l1,
+                          const Line              &l2,
+                          const Line              &l3,
                           std::array<Point<2>, 3> &triangle,
-                          double &                 area)
+                          double                  &area)
       {
         const double s12 = cross(l1.normal, l2.normal);
         const double s23 = cross(l2.normal, l3.normal);
@@ -110,9 +110,8 @@ namespace psmpm
         std::size_t           k = 0;
         for (std::size_t i = 0; i < points.size(); ++i)
           {
-            while (k >= 2 &&
-                   cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <=
-                     tol)
+            while (k >= 2 && cross(hull[k - 1] - hull[k - 2],
+                                   points[i] - hull[k - 2]) <= tol)
               --k;
             hull[k++] = points[i];
           }
@@ -147,9 +146,9 @@ namespace psmpm
        */
       bool
       smallest_control_triangle(const std::vector<Point<2>> &points,
-                                const std::vector<Line> &    fixed,
+                                const std::vector<Line>     &fixed,
                                 const double                 scale,
-                                std::array<Point<2>, 3> &    best)
+                                std::array<Point<2>, 3>     &best)
       {
         const auto support = [&points](const Tensor<1, 2> &n) {
           double c = -std::numeric_limits<double>::max();
@@ -157,15 +156,15 @@ namespace psmpm
             c = std::max(c, n * p);
           return Line{n, c};
         };
-        const auto bisector = [&support](const Line &a, const Line &b,
-                                         bool &ok) {
-          const Tensor<1, 2> d = -(a.normal + b.normal);
-          ok                   = d.norm() > 1e-10;
-          return support(ok ? d / d.norm() : d);
-        };
+        const auto bisector =
+          [&support](const Line &a, const Line &b, bool &ok) {
+            const Tensor<1, 2> d = -(a.normal + b.normal);
+            ok                   = d.norm() > 1e-10;
+            return support(ok ? d / d.norm() : d);
+          };
 
-        const auto         hull = convex_hull(points, scale);
-        std::vector<Line>  hull_lines;
+        const auto        hull = convex_hull(points, scale);
+        std::vector<Line> hull_lines;
         for (std::size_t i = 0; i < hull.size(); ++i)
           hull_lines.push_back(
             support(outward_normal(hull[i], hull[(i + 1) % hull.size()])));
@@ -173,9 +172,7 @@ namespace psmpm
         double                  best_area = std::numeric_limits<double>::max();
         std::array<Point<2>, 3> t;
         double                  area;
-        const auto              consider = [&](const Line &a,
-                                  const Line &b,
-                                  const Line &c) {
+        const auto consider = [&](const Line &a, const Line &b, const Line &c) {
           // Strict improvement only, so the first of equal candidates wins
           // and the choice is deterministic.
           if (triangle_from_lines(a, b, c, t, area) &&
@@ -220,7 +217,8 @@ namespace psmpm
 
     PowellSabin::PowellSabin()
       : fe(FE_SimplexP<2>(1), 3)
-    {}
+    {
+    }
 
     std::string
     PowellSabin::name() const
@@ -264,8 +262,8 @@ namespace psmpm
           for (unsigned int k = 0; k < 3; ++k)
             {
               const unsigned int v    = cell->vertex_index(k);
-              const Point<2> &   V    = c.vertices[k];
-              auto &             list = vertex_ps_points[v];
+              const Point<2>    &V    = c.vertices[k];
+              auto              &list = vertex_ps_points[v];
               if (list.empty())
                 list.push_back(V);
               list.push_back(0.5 * (V + c.split_point));
@@ -278,7 +276,7 @@ namespace psmpm
                 {
                   const unsigned int a = cell->vertex_index(k),
                                      b = cell->vertex_index((k + 1) % 3);
-                  const auto face = cell->face(f);
+                  const auto face      = cell->face(f);
                   if ((face->vertex_index(0) == a &&
                        face->vertex_index(1) == b) ||
                       (face->vertex_index(0) == b &&
@@ -290,8 +288,8 @@ namespace psmpm
                 }
         }
 
-      const std::vector<bool> &used = tria.get_used_vertices();
-      const auto &             vertices = tria.get_vertices();
+      const std::vector<bool> &used     = tria.get_used_vertices();
+      const auto              &vertices = tria.get_vertices();
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           auto &points = vertex_ps_points[v];
@@ -302,22 +300,22 @@ namespace psmpm
           for (const auto &p : points)
             scale = std::max(scale, p.distance(V));
 
-          VertexData &      data = vertex_data[v];
+          VertexData       &data = vertex_data[v];
           std::vector<Line> fixed;
           if (arriving_from[v].empty() && leaving_to[v].empty())
             data.kind = VertexKind::interior;
           else if (arriving_from[v].size() == 1 && leaving_to[v].size() == 1)
             {
-              const Point<2> &   W1 = arriving_from[v][0];
-              const Point<2> &   W2 = leaving_to[v][0];
+              const Point<2>    &W1 = arriving_from[v][0];
+              const Point<2>    &W2 = leaving_to[v][0];
               const Tensor<1, 2> n1 = outward_normal(W1, V);
               const Tensor<1, 2> n2 = outward_normal(V, W2);
               const double       turn =
                 cross(V - W1, W2 - V) / ((V - W1).norm() * (W2 - V).norm());
               if (std::abs(turn) <= 1e-10)
                 {
-                  data.kind                = VertexKind::straight_boundary;
-                  const Tensor<1, 2> n     = (n1 + n2) / (n1 + n2).norm();
+                  data.kind            = VertexKind::straight_boundary;
+                  const Tensor<1, 2> n = (n1 + n2) / (n1 + n2).norm();
                   fixed.push_back(Line{n, n * V});
                 }
               else if (turn > 0)
@@ -332,8 +330,10 @@ namespace psmpm
           else
             data.kind = VertexKind::unaligned_boundary;
 
-          const bool found =
-            smallest_control_triangle(points, fixed, scale, data.control_points);
+          const bool found = smallest_control_triangle(points,
+                                                       fixed,
+                                                       scale,
+                                                       data.control_points);
           AssertThrow(found,
                       ExcMessage("Powell-Sabin: no control triangle contains "
                                  "the PS points of " +
@@ -379,12 +379,12 @@ namespace psmpm
       for (const auto &cell : tria.active_cell_iterators())
         {
           const unsigned int index = cell->active_cell_index();
-          const auto &       c     = ps_refinement.cell(index);
-          CellData &         d     = cell_data[index];
+          const auto        &c     = ps_refinement.cell(index);
+          CellData          &d     = cell_data[index];
 
           // Affine maps relative to the cell's first vertex keep their
           // constants of order one whatever the cell's position.
-          d.origin                = c.vertices[0];
+          d.origin            = c.vertices[0];
           const auto to_local = [&d](const std::array<Point<2>, 3> &t) {
             return std::array<Point<2>, 3>{{Point<2>(t[0] - d.origin),
                                             Point<2>(t[1] - d.origin),
@@ -393,16 +393,16 @@ namespace psmpm
           const auto macro = Mesh::barycentric_map(to_local(c.vertices));
           for (unsigned int k = 0; k < 3; ++k)
             {
-              d.macro[k][0]       = macro.constant[k];
-              d.macro[k][1]       = macro.gradient[k][0];
-              d.macro[k][2]       = macro.gradient[k][1];
-              d.inverse_split[k]  = 1. / c.split_barycentric[k];
-              const Point<2>  R(c.edge_points[k] - d.origin);
-              const Point<2>  Z(c.split_point - d.origin);
-              const Point<2>  Vk(c.vertices[k] - d.origin);
+              d.macro[k][0]      = macro.constant[k];
+              d.macro[k][1]      = macro.gradient[k][0];
+              d.macro[k][2]      = macro.gradient[k][1];
+              d.inverse_split[k] = 1. / c.split_barycentric[k];
+              const Point<2> R(c.edge_points[k] - d.origin);
+              const Point<2> Z(c.split_point - d.origin);
+              const Point<2> Vk(c.vertices[k] - d.origin);
               // s(x) = cross(Z - R, x - R), positive left of R->Z.
-              const Tensor<1, 2> e = Z - R;
-              double             a = -e[0] * R[1] + e[1] * R[0];
+              const Tensor<1, 2> e  = Z - R;
+              double             a  = -e[0] * R[1] + e[1] * R[0];
               double             gx = -e[1], gy = e[0];
               if (a + gx * Vk[0] + gy * Vk[1] < 0)
                 {
@@ -436,26 +436,26 @@ namespace psmpm
           for (unsigned int k = 0; k < 3; ++k)
             {
               const unsigned int km1 = (k + 2) % 3; // edge k-1 ends at V_k
-              const Point<2> &   V   = c.vertices[k];
-              const auto &       vd  = vertex_data[cell->vertex_index(k)];
+              const Point<2>    &V   = c.vertices[k];
+              const auto        &vd  = vertex_data[cell->vertex_index(k)];
               for (unsigned int q = 0; q < 3; ++q)
                 {
                   const unsigned int i = 3 * k + q;
-                  const Triplet &    t = vd.triplets[q];
-                  const auto T = [&](const Point<2> &P) {
+                  const Triplet     &t = vd.triplets[q];
+                  const auto         T = [&](const Point<2> &P) {
                     return t.alpha + 0.5 * (t.gradient * (P - V));
                   };
-                  const double w_next = c.edge_weights[k][0]; // V_k in R_k
+                  const double w_next = c.edge_weights[k][0];   // V_k in R_k
                   const double w_prev = c.edge_weights[km1][1]; // in R_{k-1}
-                  d.ordinates[k][i]           = t.alpha;
+                  d.ordinates[k][i]   = t.alpha;
                   d.ordinates[7 + 2 * k][i]   = T(c.edge_points[k]);
                   d.ordinates[8 + 2 * km1][i] = T(c.edge_points[km1]);
                   d.ordinates[13 + k][i]      = T(Z);
                   d.ordinates[3 + k][i]       = w_next * T(c.edge_points[k]);
-                  d.ordinates[3 + km1][i] = w_prev * T(c.edge_points[km1]);
+                  d.ordinates[3 + km1][i]     = w_prev * T(c.edge_points[km1]);
                   d.ordinates[16 + k][i]      = w_next * T(Z);
                   d.ordinates[16 + km1][i]    = w_prev * T(Z);
-                  d.ordinates[6][i] = c.split_barycentric[k] * T(Z);
+                  d.ordinates[6][i]           = c.split_barycentric[k] * T(Z);
                 }
             }
 
@@ -463,20 +463,20 @@ namespace psmpm
           // every PS point in its control triangle they all are.
           for (unsigned int j = 0; j < 19; ++j)
             for (unsigned int i = 0; i < 9; ++i)
-              AssertThrow(
-                d.ordinates[j][i] > -1e-10,
-                ExcMessage("Powell-Sabin: negative Bezier ordinate of a "
-                           "basis function of " +
-                           describe_vertex(cell->vertex_index(i / 3),
-                                           cell->vertex(i / 3)) +
-                           " in cell " + std::to_string(index) + "."));
+              AssertThrow(d.ordinates[j][i] > -1e-10,
+                          ExcMessage(
+                            "Powell-Sabin: negative Bezier ordinate of a "
+                            "basis function of " +
+                            describe_vertex(cell->vertex_index(i / 3),
+                                            cell->vertex(i / 3)) +
+                            " in cell " + std::to_string(index) + "."));
         }
     }
 
     std::array<Point<2>, 19>
     PowellSabin::bezier_points(const unsigned int cell) const
     {
-      const auto &             c = ps_refinement.cell(cell);
+      const auto              &c = ps_refinement.cell(cell);
       std::array<Point<2>, 19> p;
       for (unsigned int k = 0; k < 3; ++k)
         {
@@ -494,10 +494,11 @@ namespace psmpm
 
     void
     PowellSabin::evaluate(const unsigned int cell,
-                          const Point<2> &   p,
-                          double *           values,
-                          Tensor<1, 2> *     gradients) const
+                          const Point<2>    &p,
+                          double            *values,
+                          Tensor<1, 2>      *gradients) const
     {
+      AssertIndexRange(cell, cell_data.size());
       const CellData &d = cell_data[cell];
       const double    x = p[0] - d.origin[0], y = p[1] - d.origin[1];
 
@@ -511,8 +512,9 @@ namespace psmpm
       const unsigned int m =
         (r[0] <= r[1]) ? (r[0] <= r[2] ? 0 : 2) : (r[1] <= r[2] ? 1 : 2);
       const unsigned int edge = (m + 1) % 3;
-      const double *     sl   = d.split_line[edge];
-      const unsigned int s    = 2 * edge + (sl[0] + sl[1] * x + sl[2] * y >= 0 ? 0 : 1);
+      const double      *sl   = d.split_line[edge];
+      const unsigned int s =
+        2 * edge + (sl[0] + sl[1] * x + sl[2] * y >= 0 ? 0 : 1);
 
       double l[3], gl[3][2];
       for (unsigned int k = 0; k < 3; ++k)
@@ -523,41 +525,59 @@ namespace psmpm
         }
       // Quadratic Bernstein polynomials l1^2, l2^2, l3^2, 2 l1 l2, 2 l2 l3,
       // 2 l3 l1 and their gradients.
-      const double b[6] = {l[0] * l[0],
-                           l[1] * l[1],
-                           l[2] * l[2],
-                           2 * l[0] * l[1],
-                           2 * l[1] * l[2],
-                           2 * l[2] * l[0]};
-      const unsigned int *idx = sub_triangle_points[s];
-      const double *      o0 = d.ordinates[idx[0]], *o1 = d.ordinates[idx[1]],
+      const double        b[6] = {l[0] * l[0],
+                                  l[1] * l[1],
+                                  l[2] * l[2],
+                                  2 * l[0] * l[1],
+                                  2 * l[1] * l[2],
+                                  2 * l[2] * l[0]};
+      const unsigned int *idx  = sub_triangle_points[s];
+      const double       *o0 = d.ordinates[idx[0]], *o1 = d.ordinates[idx[1]],
                    *o2 = d.ordinates[idx[2]], *o3 = d.ordinates[idx[3]],
                    *o4 = d.ordinates[idx[4]], *o5 = d.ordinates[idx[5]];
+      if (gradients == nullptr)
+        {
+          for (unsigned int i = 0; i < 9; ++i)
+            values[i] = b[0] * o0[i] + b[1] * o1[i] + b[2] * o2[i] +
+                        b[3] * o3[i] + b[4] * o4[i] + b[5] * o5[i];
+          return;
+        }
+      double dbx[6], dby[6];
+      {
+        const double l0 = 2 * l[0], l1 = 2 * l[1], l2 = 2 * l[2];
+        dbx[0] = l0 * gl[0][0];
+        dby[0] = l0 * gl[0][1];
+        dbx[1] = l1 * gl[1][0];
+        dby[1] = l1 * gl[1][1];
+        dbx[2] = l2 * gl[2][0];
+        dby[2] = l2 * gl[2][1];
+        dbx[3] = gl[0][0] * l1 + l0 * gl[1][0];
+        dby[3] = gl[0][1] * l1 + l0 * gl[1][1];
+        dbx[4] = gl[1][0] * l2 + l1 * gl[2][0];
+        dby[4] = gl[1][1] * l2 + l1 * gl[2][1];
+        dbx[5] = gl[2][0] * l0 + l2 * gl[0][0];
+        dby[5] = gl[2][1] * l0 + l2 * gl[0][1];
+      }
+      // One pass: every ordinate is loaded once for value and gradient.
       for (unsigned int i = 0; i < 9; ++i)
-        values[i] = b[0] * o0[i] + b[1] * o1[i] + b[2] * o2[i] +
-                    b[3] * o3[i] + b[4] * o4[i] + b[5] * o5[i];
-      if (gradients != nullptr)
-        for (unsigned int c = 0; c < 2; ++c)
-          {
-            const double db[6] = {2 * l[0] * gl[0][c],
-                                  2 * l[1] * gl[1][c],
-                                  2 * l[2] * gl[2][c],
-                                  2 * (gl[0][c] * l[1] + l[0] * gl[1][c]),
-                                  2 * (gl[1][c] * l[2] + l[1] * gl[2][c]),
-                                  2 * (gl[2][c] * l[0] + l[2] * gl[0][c])};
-            for (unsigned int i = 0; i < 9; ++i)
-              gradients[i][c] = db[0] * o0[i] + db[1] * o1[i] +
-                                db[2] * o2[i] + db[3] * o3[i] +
-                                db[4] * o4[i] + db[5] * o5[i];
-          }
+        {
+          const double a0 = o0[i], a1 = o1[i], a2 = o2[i], a3 = o3[i],
+                       a4 = o4[i], a5 = o5[i];
+          values[i] = b[0] * a0 + b[1] * a1 + b[2] * a2 + b[3] * a3 +
+                      b[4] * a4 + b[5] * a5;
+          gradients[i][0] = dbx[0] * a0 + dbx[1] * a1 + dbx[2] * a2 +
+                            dbx[3] * a3 + dbx[4] * a4 + dbx[5] * a5;
+          gradients[i][1] = dby[0] * a0 + dby[1] * a1 + dby[2] * a2 +
+                            dby[3] * a3 + dby[4] * a4 + dby[5] * a5;
+        }
     }
 
     void
     PowellSabin::evaluate(const unsigned int  n,
                           const unsigned int *cells,
-                          const Point<2> *    points,
-                          double *            values,
-                          Tensor<1, 2> *      gradients) const
+                          const Point<2>     *points,
+                          double             *values,
+                          Tensor<1, 2>       *gradients) const
     {
       for (unsigned int i = 0; i < n; ++i)
         PowellSabin::evaluate(cells[i],
@@ -569,10 +589,10 @@ namespace psmpm
 
     void
     PowellSabin::make_dirichlet_constraints(
-      const DoFHandler<2> &               dof_handler,
+      const DoFHandler<2>                &dof_handler,
       const std::set<types::boundary_id> &ids,
-      const Function<2> &                 g,
-      AffineConstraints<double> &         constraints) const
+      const Function<2>                  &g,
+      AffineConstraints<double>          &constraints) const
     {
       // Per constrained vertex: its three DoFs and the rows
       // (coefficients on c_0..c_2, right-hand side).
@@ -582,6 +602,10 @@ namespace psmpm
         std::vector<std::array<double, 4>>     rows;
       };
       std::map<unsigned int, VertexRows> vertex_rows;
+      AssertThrow(vertex_data.size() ==
+                    dof_handler.get_triangulation().n_vertices(),
+                  ExcMessage("PowellSabin::make_dirichlet_constraints: call "
+                             "reinit() with this mesh first."));
 
       std::vector<types::global_dof_index> dofs(9);
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -605,9 +629,9 @@ namespace psmpm
                     if (cell->vertex_index(k) == face->vertex_index(fv))
                       {
                         const unsigned int v  = cell->vertex_index(k);
-                        const Point<2> &   V  = cell->vertex(k);
-                        const auto &       vd = vertex_data[v];
-                        VertexRows &       r  = vertex_rows[v];
+                        const Point<2>    &V  = cell->vertex(k);
+                        const auto        &vd = vertex_data[v];
+                        VertexRows        &r  = vertex_rows[v];
                         for (unsigned int q = 0; q < 3; ++q)
                           r.dofs[q] = dofs[3 * k + q];
                         if (r.rows.empty())
@@ -640,7 +664,7 @@ namespace psmpm
           // Gauss-Jordan elimination with full pivoting on the m x 3 system.
           std::array<unsigned int, 3> column = {{0, 1, 2}};
           unsigned int                rank   = 0;
-          auto &                      M      = r.rows;
+          auto                       &M      = r.rows;
           for (; rank < std::min<std::size_t>(3, M.size()); ++rank)
             {
               unsigned int pi = rank, pj = rank;

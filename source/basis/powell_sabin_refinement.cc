@@ -60,8 +60,7 @@ namespace psmpm
           // a = |V2 V3| etc.: the side opposite each vertex.
           std::array<double, 3> side;
           for (unsigned int k = 0; k < 3; ++k)
-            side[k] =
-              c.vertices[(k + 1) % 3].distance(c.vertices[(k + 2) % 3]);
+            side[k] = c.vertices[(k + 1) % 3].distance(c.vertices[(k + 2) % 3]);
           const double perimeter = side[0] + side[1] + side[2];
           const double area      = Mesh::signed_area(c.vertices);
           // Relative to the perimeter squared: a sliver with area 1e-14 of
@@ -72,14 +71,15 @@ namespace psmpm
               std::string msg =
                 "Powell-Sabin refinement: cell " +
                 std::to_string(cell->active_cell_index()) +
-                (area <= 0 ? " is inverted or degenerate" :
-                             " is too thin") +
-                " (area " + [area]() {
+                (area <= 0 ? " is inverted or degenerate" : " is too thin") +
+                " (area " +
+                [area]() {
                   std::ostringstream s;
                   s.precision(3);
                   s << area;
                   return s.str();
-                }() + "); its vertices: ";
+                }() +
+                "); its vertices: ";
               for (unsigned int k = 0; k < 3; ++k)
                 msg += (k > 0 ? ", " : "") +
                        describe_vertex(cell->vertex_index(k), c.vertices[k]);
@@ -119,6 +119,14 @@ namespace psmpm
                     f = g;
                 }
               Assert(f != numbers::invalid_unsigned_int, ExcInternalError());
+              // Edge points need one neighbour per edge: no hanging nodes.
+              AssertThrow(cell->at_boundary(f) ||
+                            (!cell->neighbor(f)->has_children() &&
+                             cell->neighbor(f)->level() == cell->level()),
+                          ExcMessage("Powell-Sabin splines need a conforming "
+                                     "mesh without hanging nodes; cell " +
+                                     std::to_string(cell->active_cell_index()) +
+                                     " has a refined or coarser neighbour."));
               const auto face = cell->face(f);
               FacePoint &fp   = face_points[face->index()];
               if (!fp.computed)
@@ -134,8 +142,8 @@ namespace psmpm
                           .split_point;
                       // A + w (B - A) = zt + s (zs - zt)
                       const Tensor<1, 2> e = B - A, d = zs - zt, r = zt - A;
-                      const double det = -cross(e, d);
-                      const bool   ok =
+                      const double       det = -cross(e, d);
+                      const bool         ok =
                         std::abs(det) > 1e-14 * e.norm() * d.norm();
                       if (ok)
                         w = -cross(r, d) / det;
@@ -152,8 +160,7 @@ namespace psmpm
                             std::to_string(
                               cell->neighbor(f)->active_cell_index()) +
                             " does not cross their common edge from " +
-                            describe_vertex(face->vertex_index(0), A) +
-                            " to " +
+                            describe_vertex(face->vertex_index(0), A) + " to " +
                             describe_vertex(face->vertex_index(1), B) + "."));
                     }
                   fp.computed           = true;
@@ -162,11 +169,11 @@ namespace psmpm
                 }
               c.edge_points[k] = fp.point;
               if (face->vertex_index(0) == a)
-                c.edge_weights[k] = {{fp.weight_of_vertex_0,
-                                      1 - fp.weight_of_vertex_0}};
+                c.edge_weights[k] = {
+                  {fp.weight_of_vertex_0, 1 - fp.weight_of_vertex_0}};
               else
-                c.edge_weights[k] = {{1 - fp.weight_of_vertex_0,
-                                      fp.weight_of_vertex_0}};
+                c.edge_weights[k] = {
+                  {1 - fp.weight_of_vertex_0, fp.weight_of_vertex_0}};
             }
         }
     }

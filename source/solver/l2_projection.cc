@@ -20,6 +20,7 @@
 #include <psmpm/solver/l2_projection.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -65,8 +66,9 @@ namespace psmpm
       subdivide(const std::array<Point<2>, 3> &t, const unsigned int n)
       {
         const auto at = [&](const unsigned int i, const unsigned int j) {
-          return combine(t,
-                         {{double(n - i - j) / n, double(i) / n, double(j) / n}});
+          return combine(
+            t,
+            {{double(n - i - j) / n, double(i) / n, double(j) / n}});
         };
         std::vector<std::array<Point<2>, 3>> result;
         for (unsigned int j = 0; j < n; ++j)
@@ -95,24 +97,22 @@ namespace psmpm
       }
 
       void
-      write_patches(const std::string &                          filename,
-                    std::vector<DataOutBase::Patch<2, 2>> &       patches,
-                    const std::vector<std::string> &              names)
+      write_patches(const std::string                     &filename,
+                    std::vector<DataOutBase::Patch<2, 2>> &patches,
+                    const std::vector<std::string>        &names)
       {
         for (unsigned int i = 0; i < patches.size(); ++i)
           patches[i].patch_index = i;
         std::ofstream out(filename);
-        AssertThrow(out.good(),
-                    ExcMessage("Cannot write " + filename +
-                               " (does the output directory exist?)."));
+        AssertThrow(out.good(), ExcMessage("Cannot write " + filename + "."));
         DataOutBase::write_vtu(
           patches,
           names,
-          std::vector<
-            std::tuple<unsigned int,
-                       unsigned int,
-                       std::string,
-                       DataComponentInterpretation::DataComponentInterpretation>>(),
+          std::vector<std::tuple<
+            unsigned int,
+            unsigned int,
+            std::string,
+            DataComponentInterpretation::DataComponentInterpretation>>(),
           DataOutBase::VtkFlags(),
           out);
       }
@@ -162,18 +162,15 @@ namespace psmpm
       try
         {
           FunctionParser<2> f(1);
-          f.initialize("x,y",
-                       function_expression,
-                       {{"pi", numbers::PI}});
+          f.initialize("x,y", function_expression, {{"pi", numbers::PI}});
           f.value(Point<2>(0.5, 0.5));
         }
       catch (const std::exception &e)
         {
           AssertThrow(false,
-                      ExcMessage("Projection/Function = '" +
-                                 function_expression +
-                                 "' is not a valid function of x and y: " +
-                                 e.what()));
+                      ExcMessage(
+                        "Projection/Function = '" + function_expression +
+                        "' is not a valid function of x and y: " + e.what()));
         }
 
       output_basis_vertex = numbers::invalid_unsigned_int;
@@ -193,15 +190,15 @@ namespace psmpm
 
     void
     L2Projection::run(const Mesh::MeshGenerator &mesh,
-                      const std::string &        basis_name,
-                      const std::string &        output_directory,
-                      Postprocess::Summary &     summary,
+                      const std::string         &basis_name,
+                      const std::string         &output_directory,
+                      Postprocess::Summary      &summary,
                       MPI_Comm                   comm)
     {
       Triangulation<2> tria;
       mesh.create(tria);
 
-      auto space = Basis::create_space(basis_name);
+      auto          space = Basis::create_space(basis_name);
       DoFHandler<2> dof_handler(tria);
       dof_handler.distribute_dofs(space->dof_layout());
       space->reinit(dof_handler);
@@ -271,9 +268,9 @@ namespace psmpm
         }
       else
         {
-          SolverControl control(10 * n_dofs + 100,
+          SolverControl                          control(10 * n_dofs + 100,
                                 1e-14 * std::max(rhs.l2_norm(), 1e-300));
-          SolverCG<Vector<double>> cg(control);
+          SolverCG<Vector<double>>               cg(control);
           PreconditionSSOR<SparseMatrix<double>> ssor;
           ssor.initialize(mass, 1.2);
           cg.solve(mass, solution, rhs, ssor);
@@ -287,7 +284,8 @@ namespace psmpm
           h                    = std::max(h, cell->diameter());
           cell->get_dof_indices(dofs);
           for (unsigned int s = 0; s < 6; ++s)
-            for (const auto &t : subdivide(refinement.cell(c).sub_triangle(s), 2))
+            for (const auto &t :
+                 subdivide(refinement.cell(c).sub_triangle(s), 2))
               {
                 const double area = Mesh::signed_area(t);
                 for (unsigned int q = 0; q < 7; ++q)
@@ -297,7 +295,8 @@ namespace psmpm
                     double uh = 0;
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       uh += solution(dofs[i]) * values[i];
-                    error2 += area * rule.weights[q] * std::pow(uh - u.value(p), 2);
+                    error2 +=
+                      area * rule.weights[q] * std::pow(uh - u.value(p), 2);
                   }
               }
         }
@@ -316,15 +315,14 @@ namespace psmpm
           AssertThrow(output_basis_vertex < tria.n_vertices() &&
                         tria.get_used_vertices()[output_basis_vertex] &&
                         output_basis_function < per_vertex,
-                      ExcMessage(
-                        "Output/Basis function = '" +
-                        std::to_string(output_basis_vertex) + ", " +
-                        std::to_string(output_basis_function) +
-                        "': the mesh has vertices 0.." +
-                        std::to_string(tria.n_vertices() - 1) + " and the " +
-                        basis_name + " basis has " +
-                        std::to_string(per_vertex) +
-                        " function(s) per vertex."));
+                      ExcMessage("Output/Basis function = '" +
+                                 std::to_string(output_basis_vertex) + ", " +
+                                 std::to_string(output_basis_function) +
+                                 "': the mesh has vertices 0.." +
+                                 std::to_string(tria.n_vertices() - 1) +
+                                 " and the " + basis_name + " basis has " +
+                                 std::to_string(per_vertex) +
+                                 " function(s) per vertex."));
           for (const auto &cell : dof_handler.active_cell_iterators())
             for (unsigned int k = 0; k < 3; ++k)
               if (cell->vertex_index(k) == output_basis_vertex)
@@ -333,6 +331,7 @@ namespace psmpm
 
       if (!write_output || Utilities::MPI::this_mpi_process(comm) != 0)
         return;
+      std::filesystem::create_directories(output_directory);
 
       // Output: piecewise quadratic C1 fields on a refined patch mesh.
       std::vector<std::string> names = {"projection", "exact", "error"};

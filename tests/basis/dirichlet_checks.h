@@ -20,7 +20,7 @@ namespace dirichlet_checks
 
   /// Coefficients: deterministic "random" values, then the constraints.
   inline Vector<double>
-  constrained_coefficients(const DoFHandler<2> &            dof_handler,
+  constrained_coefficients(const DoFHandler<2>             &dof_handler,
                            const AffineConstraints<double> &constraints)
   {
     Vector<double> c(dof_handler.n_dofs());
@@ -36,11 +36,11 @@ namespace dirichlet_checks
    * values).
    */
   inline std::pair<double, double>
-  boundary_deviation(const psmpm::Basis::Space &         space,
-                     const DoFHandler<2> &               dof_handler,
-                     const Vector<double> &              c,
+  boundary_deviation(const psmpm::Basis::Space          &space,
+                     const DoFHandler<2>                &dof_handler,
+                     const Vector<double>               &c,
                      const std::set<types::boundary_id> &ids,
-                     const Function<2> &                 g)
+                     const Function<2>                  &g)
   {
     const unsigned int                   n = space.dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);

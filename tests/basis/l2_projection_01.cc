@@ -53,13 +53,14 @@ main(int argc, char **argv)
     projection.output_basis_function = 1;
     Postprocess::Summary summary;
     projection.run(diagonal, "powell-sabin", ".", summary, MPI_COMM_WORLD);
-    std::ifstream vtu("projection.vtu");
+    std::ifstream     vtu("projection.vtu");
     const std::string text((std::istreambuf_iterator<char>(vtu)),
                            std::istreambuf_iterator<char>());
     for (const std::string name :
          {"projection", "exact", "error", "basis_function"})
       {
-        const bool has_field = text.find("Name=\"" + name + "\"") != std::string::npos;
+        const bool has_field =
+          text.find("Name=\"" + name + "\"") != std::string::npos;
         out << name << ": ";
         PSMPM_CHECK(out, has_field);
       }
@@ -76,7 +77,8 @@ main(int argc, char **argv)
     catch (const std::exception &e)
       {
         const bool names_entry =
-          std::string(e.what()).find("Output/Basis function") != std::string::npos;
+          std::string(e.what()).find("Output/Basis function") !=
+          std::string::npos;
         PSMPM_CHECK(out, names_entry);
       }
   });

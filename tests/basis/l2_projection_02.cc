@@ -33,8 +33,7 @@ main(int argc, char **argv)
         error[i] = summary.get_number("errors.L2");
         out << "blocks " << mesh.blocks_x << ", dofs "
             << static_cast<long>(summary.get_number("n_dofs")) << ", error "
-            << std::setprecision(2) << std::scientific << error[i]
-            << std::endl;
+            << std::setprecision(2) << std::scientific << error[i] << std::endl;
         const double relative = std::abs(error[i] / thesis[i] - 1);
         PSMPM_CHECK(out, relative < 0.1);
       }

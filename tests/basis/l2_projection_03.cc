@@ -23,8 +23,8 @@ main()
       try
         {
           projection.parse_parameters(prm);
-          out << "function '" << projection.function_expression
-              << "', lumped " << projection.lumped << ", basis function ";
+          out << "function '" << projection.function_expression << "', lumped "
+              << projection.lumped << ", basis function ";
           if (projection.output_basis_vertex == numbers::invalid_unsigned_int)
             out << "none" << std::endl;
           else

@@ -10,8 +10,8 @@
 #include <psmpm/basis/linear.h>
 #include <psmpm/mesh/mesh_generator.h>
 
-#include "dirichlet_checks.h"
 #include "../tests.h"
+#include "dirichlet_checks.h"
 
 namespace
 {
@@ -25,8 +25,10 @@ namespace
     out << "cells " << tria.n_active_cells() << ", dofs "
         << dof_handler.n_dofs() << std::endl;
 
-    const auto f = [](const Point<2> &p) { return 0.3 - 1.7 * p[0] + 2.9 * p[1]; };
-    double     pu = 0, gsum = 0, min_value = 1e300, linear = 0;
+    const auto f = [](const Point<2> &p) {
+      return 0.3 - 1.7 * p[0] + 2.9 * p[1];
+    };
+    double pu = 0, gsum = 0, min_value = 1e300, linear = 0;
     std::vector<types::global_dof_index> dofs(3);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -37,8 +39,8 @@ namespace
               const Point<2> p(cell->vertex(0) +
                                (i / 6.) * (cell->vertex(1) - cell->vertex(0)) +
                                (j / 6.) * (cell->vertex(2) - cell->vertex(0)));
-              double       values[3];
-              Tensor<1, 2> gradients[3];
+              double         values[3];
+              Tensor<1, 2>   gradients[3];
               p1.evaluate(cell->active_cell_index(), p, values, gradients);
               double       sum = 0, u = 0;
               Tensor<1, 2> gs;
@@ -72,10 +74,14 @@ namespace
     constraints.close();
     out << "boundary vertices constrained: " << constraints.n_constraints()
         << std::endl;
-    const auto c    = dirichlet_checks::constrained_coefficients(dof_handler,
-                                                              constraints);
-    const auto zero = dirichlet_checks::boundary_deviation(
-      p1, dof_handler, c, ids, Functions::ZeroFunction<2>());
+    const auto c =
+      dirichlet_checks::constrained_coefficients(dof_handler, constraints);
+    const auto zero =
+      dirichlet_checks::boundary_deviation(p1,
+                                           dof_handler,
+                                           c,
+                                           ids,
+                                           Functions::ZeroFunction<2>());
     PSMPM_CHECK(out, zero.first < 1e-13 && zero.second < 1e-13);
   }
 } // namespace
@@ -98,8 +104,9 @@ main()
     }
     {
       Triangulation<2> tria;
-      psmpm::Mesh::MeshGenerator::read_gmsh(
-        tria, PSMPM_SOURCE_DIR "/tests/basis/l_shape.msh");
+      psmpm::Mesh::MeshGenerator::read_gmsh(tria,
+                                            PSMPM_SOURCE_DIR
+                                            "/tests/basis/l_shape.msh");
       check(out, tria);
     }
   });

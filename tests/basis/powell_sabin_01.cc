@@ -1,8 +1,8 @@
 // ---------------------------------------------------------------------
-// psmpm: Powell-Sabin space on a diagonal mesh of 2 x 1 rectangle, 5 x 3 blocks (non-square blocks):
-// DoF layout, partition of unity, non-negativity, C1 across macro and
-// sub-triangle edges, local support, linear reproduction, control
-// triangles.
+// psmpm: Powell-Sabin space on a diagonal mesh of 2 x 1 rectangle, 5 x 3 blocks
+// (non-square blocks): DoF layout, partition of unity, non-negativity, C1
+// across macro and sub-triangle edges, local support, linear reproduction,
+// control triangles.
 // ---------------------------------------------------------------------
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
@@ -16,9 +16,15 @@ int
 main()
 {
   return run_test([]() {
-    std::ofstream out("output");
+    std::ofstream    out("output");
     Triangulation<2> tria;
-    psmpm::Mesh::MeshGenerator::make_blocks(tria, Point<2>(0, 0), Point<2>(2, 1), 5, 3, psmpm::Mesh::MeshGenerator::Type::diagonal);
+    psmpm::Mesh::MeshGenerator::make_blocks(
+      tria,
+      Point<2>(0, 0),
+      Point<2>(2, 1),
+      5,
+      3,
+      psmpm::Mesh::MeshGenerator::Type::diagonal);
     psmpm::Basis::PowellSabin ps;
     DoFHandler<2>             dof_handler(tria);
     dof_handler.distribute_dofs(ps.dof_layout());

@@ -1,6 +1,6 @@
 // ---------------------------------------------------------------------
-// psmpm: Powell-Sabin space on a criss-cross mesh of the unit square, 4 x 3 blocks:
-// DoF layout, partition of unity, non-negativity, C1 across macro and
+// psmpm: Powell-Sabin space on a criss-cross mesh of the unit square, 4 x 3
+// blocks: DoF layout, partition of unity, non-negativity, C1 across macro and
 // sub-triangle edges, local support, linear reproduction, control
 // triangles.
 // ---------------------------------------------------------------------
@@ -16,9 +16,15 @@ int
 main()
 {
   return run_test([]() {
-    std::ofstream out("output");
+    std::ofstream    out("output");
     Triangulation<2> tria;
-    psmpm::Mesh::MeshGenerator::make_blocks(tria, Point<2>(0, 0), Point<2>(1, 1), 4, 3, psmpm::Mesh::MeshGenerator::Type::criss_cross);
+    psmpm::Mesh::MeshGenerator::make_blocks(
+      tria,
+      Point<2>(0, 0),
+      Point<2>(1, 1),
+      4,
+      3,
+      psmpm::Mesh::MeshGenerator::Type::criss_cross);
     psmpm::Basis::PowellSabin ps;
     DoFHandler<2>             dof_handler(tria);
     dof_handler.distribute_dofs(ps.dof_layout());

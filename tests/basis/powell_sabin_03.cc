@@ -1,8 +1,8 @@
 // ---------------------------------------------------------------------
-// psmpm: Powell-Sabin space on a unstructured non-uniform Gmsh mesh of an L-shape (reflex corner):
-// DoF layout, partition of unity, non-negativity, C1 across macro and
-// sub-triangle edges, local support, linear reproduction, control
-// triangles.
+// psmpm: Powell-Sabin space on a unstructured non-uniform Gmsh mesh of an
+// L-shape (reflex corner): DoF layout, partition of unity, non-negativity, C1
+// across macro and sub-triangle edges, local support, linear reproduction,
+// control triangles.
 // ---------------------------------------------------------------------
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
@@ -16,9 +16,11 @@ int
 main()
 {
   return run_test([]() {
-    std::ofstream out("output");
+    std::ofstream    out("output");
     Triangulation<2> tria;
-    psmpm::Mesh::MeshGenerator::read_gmsh(tria, PSMPM_SOURCE_DIR "/tests/basis/l_shape.msh");
+    psmpm::Mesh::MeshGenerator::read_gmsh(tria,
+                                          PSMPM_SOURCE_DIR
+                                          "/tests/basis/l_shape.msh");
     psmpm::Basis::PowellSabin ps;
     DoFHandler<2>             dof_handler(tria);
     dof_handler.distribute_dofs(ps.dof_layout());

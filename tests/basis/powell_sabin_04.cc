@@ -14,8 +14,8 @@
 #include <psmpm/basis/powell_sabin.h>
 #include <psmpm/mesh/mesh_generator.h>
 
-#include "dirichlet_checks.h"
 #include "../tests.h"
+#include "dirichlet_checks.h"
 
 namespace
 {
@@ -92,34 +92,42 @@ main()
           for (unsigned int q = 0; q < 3; ++q)
             if (constraints.is_constrained(cell->vertex_dof_index(k, q)))
               {
-                const Point<2> Q = ps.control_triangle(cell->vertex_index(k))[q];
+                const Point<2> Q =
+                  ps.control_triangle(cell->vertex_index(k))[q];
                 const Point<2> V = cell->vertex(k);
-                on_line = on_line && ((std::abs(V[0]) < 1e-12 &&
-                                       std::abs(Q[0]) < 1e-12) ||
-                                      (std::abs(V[1]) < 1e-12 &&
-                                       std::abs(Q[1]) < 1e-12));
+                on_line          = on_line &&
+                          ((std::abs(V[0]) < 1e-12 && std::abs(Q[0]) < 1e-12) ||
+                           (std::abs(V[1]) < 1e-12 && std::abs(Q[1]) < 1e-12));
               }
       PSMPM_CHECK(out, on_line);
 
       const auto c    = constrained_coefficients(dof_handler, constraints);
-      const auto zero = boundary_deviation(
-        ps, dof_handler, c, ids, Functions::ZeroFunction<2>());
+      const auto zero = boundary_deviation(ps,
+                                           dof_handler,
+                                           c,
+                                           ids,
+                                           Functions::ZeroFunction<2>());
       PSMPM_CHECK(out, zero.first < 1e-13 && zero.second < 1e-13);
-      const auto free = boundary_deviation(
-        ps, dof_handler, c, {1, 3}, Functions::ZeroFunction<2>());
+      const auto free = boundary_deviation(ps,
+                                           dof_handler,
+                                           c,
+                                           {1, 3},
+                                           Functions::ZeroFunction<2>());
       PSMPM_CHECK(out, free.first > 0.1);
 
       // Inhomogeneous, quadratic g on all four sides: the trace of a PS
       // spline on an edge is determined by the values and tangential
       // derivatives at its ends, and the central difference is exact for
       // quadratics up to round-off of order eps / step = 1e-16 / 1e-6.
-      const Quadratic g;
+      const Quadratic           g;
       AffineConstraints<double> inhomogeneous;
-      ps.make_dirichlet_constraints(dof_handler, {0, 1, 2, 3}, g, inhomogeneous);
+      ps.make_dirichlet_constraints(dof_handler,
+                                    {0, 1, 2, 3},
+                                    g,
+                                    inhomogeneous);
       inhomogeneous.close();
-      const auto ci = constrained_coefficients(dof_handler, inhomogeneous);
-      const auto dev =
-        boundary_deviation(ps, dof_handler, ci, {0, 1, 2, 3}, g);
+      const auto ci  = constrained_coefficients(dof_handler, inhomogeneous);
+      const auto dev = boundary_deviation(ps, dof_handler, ci, {0, 1, 2, 3}, g);
       out << "inhomogeneous on all sides: " << inhomogeneous.n_constraints()
           << " constrained coefficients" << std::endl;
       PSMPM_CHECK(out, dev.first < 1e-9 && dev.second < 1e-8);
@@ -127,7 +135,8 @@ main()
     {
       Triangulation<2> tria;
       Mesh::MeshGenerator::read_gmsh(tria,
-                                     PSMPM_SOURCE_DIR "/tests/basis/l_shape.msh");
+                                     PSMPM_SOURCE_DIR
+                                     "/tests/basis/l_shape.msh");
       Basis::PowellSabin ps;
       DoFHandler<2>      dof_handler(tria);
       dof_handler.distribute_dofs(ps.dof_layout());
@@ -142,8 +151,11 @@ main()
       out << "L-shape, homogeneous everywhere: " << constraints.n_constraints()
           << " constrained coefficients" << std::endl;
       const auto c    = constrained_coefficients(dof_handler, constraints);
-      const auto zero = boundary_deviation(
-        ps, dof_handler, c, ids, Functions::ZeroFunction<2>());
+      const auto zero = boundary_deviation(ps,
+                                           dof_handler,
+                                           c,
+                                           ids,
+                                           Functions::ZeroFunction<2>());
       PSMPM_CHECK(out, zero.first < 1e-13 && zero.second < 1e-13);
     }
   });

@@ -18,11 +18,12 @@ namespace
   void
   fan(Triangulation<2> &tria, const Point<2> &p)
   {
-    const std::vector<Point<2>> vertices = {
-      {0, 0}, {1, 0}, {1, 1}, {0, 1}, p};
-    std::vector<CellData<2>> cells;
-    for (const auto &v : std::vector<std::array<unsigned int, 3>>{
-           {{0, 1, 4}}, {{1, 2, 4}}, {{2, 3, 4}}, {{3, 0, 4}}})
+    const std::vector<Point<2>> vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, p};
+    std::vector<CellData<2>>    cells;
+    for (const auto &v : std::vector<std::array<unsigned int, 3>>{{{0, 1, 4}},
+                                                                  {{1, 2, 4}},
+                                                                  {{2, 3, 4}},
+                                                                  {{3, 0, 4}}})
       {
         CellData<2> c(3);
         c.vertices = {v[0], v[1], v[2]};
@@ -70,8 +71,8 @@ main()
     std::ofstream out("output");
     for (const double y : {0.02, 1e-4})
       {
-        out << "fan around (0.5, " << y
-            << "): obtuse sliver on the bottom edge" << std::endl;
+        out << "fan around (0.5, " << y << "): obtuse sliver on the bottom edge"
+            << std::endl;
         Triangulation<2> tria;
         fan(tria, Point<2>(0.5, y));
         build_and_check(out, tria);
@@ -94,9 +95,9 @@ main()
         for (unsigned int k = 0; k < 3; ++k)
           {
             const unsigned int v = cell->vertex_index(k);
-            Point<2> &         p = cell->vertex(k);
-            if (moved[v] || p[0] < 1e-12 || p[0] > 1 - 1e-12 ||
-                p[1] < 1e-12 || p[1] > 1 - 1e-12)
+            Point<2>          &p = cell->vertex(k);
+            if (moved[v] || p[0] < 1e-12 || p[0] > 1 - 1e-12 || p[1] < 1e-12 ||
+                p[1] > 1 - 1e-12)
               continue;
             moved[v] = true;
             p[0] += 0.4 / 6 * std::sin(12.9898 * v);

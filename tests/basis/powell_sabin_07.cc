@@ -43,8 +43,9 @@ main()
                          cell->measure());
         }
     out << "largest corner control triangle / adjacent cell area: "
-        << (max_ratio < 10 ? "below 10" :
-            max_ratio < 100 ? "10 to 100" : "above 100")
+        << (max_ratio < 10  ? "below 10" :
+            max_ratio < 100 ? "10 to 100" :
+                              "above 100")
         << std::endl;
 
     AffineConstraints<double> constraints;
@@ -55,8 +56,12 @@ main()
     constraints.close();
     const auto c =
       dirichlet_checks::constrained_coefficients(dof_handler, constraints);
-    const auto zero = dirichlet_checks::boundary_deviation(
-      ps, dof_handler, c, {0}, Functions::ZeroFunction<2>());
+    const auto zero =
+      dirichlet_checks::boundary_deviation(ps,
+                                           dof_handler,
+                                           c,
+                                           {0},
+                                           Functions::ZeroFunction<2>());
     PSMPM_CHECK(out, zero.first < 1e-13 && zero.second < 1e-13);
   });
 }

@@ -12,11 +12,11 @@
 #include <psmpm/basis/powell_sabin.h>
 #include <psmpm/mesh/triangle_geometry.h>
 
+#include "../tests.h"
+
 #include <algorithm>
 #include <map>
 #include <vector>
-
-#include "../tests.h"
 
 namespace ps_checks
 {
@@ -52,9 +52,9 @@ namespace ps_checks
   evaluate_piece(const Basis::PowellSabin &ps,
                  const unsigned int        cell,
                  const unsigned int        s,
-                 const Point<2> &          p,
-                 double *                  values,
-                 Tensor<1, 2> *            gradients)
+                 const Point<2>           &p,
+                 double                   *values,
+                 Tensor<1, 2>             *gradients)
   {
     static const unsigned int points[6][6] = {{0, 3, 6, 7, 16, 13},
                                               {3, 1, 6, 8, 14, 16},
@@ -62,14 +62,14 @@ namespace ps_checks
                                               {4, 2, 6, 10, 15, 17},
                                               {2, 5, 6, 11, 18, 15},
                                               {5, 0, 6, 12, 13, 18}};
-    const auto bp  = ps.bezier_points(cell);
+    const auto                bp           = ps.bezier_points(cell);
     // The Bezier point list itself defines the sub-triangle: checks that
     // the numbering agrees with the refinement.
     // Relative to the first point, for precision independent of position.
-    const Point<2>                o = bp[points[s][0]];
-    const std::array<Point<2>, 3> t = {{Point<2>(bp[points[s][0]] - o),
-                                        Point<2>(bp[points[s][1]] - o),
-                                        Point<2>(bp[points[s][2]] - o)}};
+    const Point<2>                o   = bp[points[s][0]];
+    const std::array<Point<2>, 3> t   = {{Point<2>(bp[points[s][0]] - o),
+                                          Point<2>(bp[points[s][1]] - o),
+                                          Point<2>(bp[points[s][2]] - o)}};
     const auto                    map = Mesh::barycentric_map(t);
     const auto                    l   = map(Point<2>(p - o));
     for (unsigned int i = 0; i < 9; ++i)
@@ -81,7 +81,8 @@ namespace ps_checks
                     o[2] * l[2] * l[2] + 2 * o[3] * l[0] * l[1] +
                     2 * o[4] * l[1] * l[2] + 2 * o[5] * l[2] * l[0];
         gradients[i] =
-          2 * o[0] * l[0] * map.gradient[0] + 2 * o[1] * l[1] * map.gradient[1] +
+          2 * o[0] * l[0] * map.gradient[0] +
+          2 * o[1] * l[1] * map.gradient[1] +
           2 * o[2] * l[2] * map.gradient[2] +
           2 * o[3] * (l[0] * map.gradient[1] + l[1] * map.gradient[0]) +
           2 * o[4] * (l[1] * map.gradient[2] + l[2] * map.gradient[1]) +
@@ -112,8 +113,9 @@ namespace ps_checks
       {
         double longest = 0;
         for (unsigned int k = 0; k < 3; ++k)
-          longest = std::max(longest,
-                             cell->vertex(k).distance(cell->vertex((k + 1) % 3)));
+          longest =
+            std::max(longest,
+                     cell->vertex(k).distance(cell->vertex((k + 1) % 3)));
         r = std::max(r, longest * longest / (2 * cell->measure()));
       }
     return r;
@@ -125,12 +127,12 @@ namespace ps_checks
    * layout of @p ps, already reinit'ed).
    */
   inline void
-  check_space(std::ostream &             out,
-              const DoFHandler<2> &      dof_handler,
-              const Basis::PowellSabin & ps)
+  check_space(std::ostream             &out,
+              const DoFHandler<2>      &dof_handler,
+              const Basis::PowellSabin &ps)
   {
-    const auto &       tria   = dof_handler.get_triangulation();
-    const auto         sample = sample_barycentric();
+    const auto &tria   = dof_handler.get_triangulation();
+    const auto  sample = sample_barycentric();
     // Gradients scale like 1/altitude: compare them relative to that.
     const double gscale = 1. / min_altitude(tria);
     // Barycentric coordinates of a triangle lose digits in proportion to
@@ -138,8 +140,8 @@ namespace ps_checks
     // 100), proportionally more for slivers.
     const double aspect = max_aspect_ratio(tria);
     const double tol    = 1e-12 * std::max(1., aspect / 100);
-    double             values[9];
-    Tensor<1, 2>       gradients[9];
+    double       values[9];
+    Tensor<1, 2> gradients[9];
     std::vector<types::global_dof_index> dofs(9);
 
     unsigned int n_kind[4] = {0, 0, 0, 0};
@@ -156,8 +158,8 @@ namespace ps_checks
         << std::endl;
 
     // DoF layout: local 3k+q is component q of cell vertex k.
-    bool layout_ok = dof_handler.n_dofs() == 3 * tria.n_used_vertices();
-    const auto &fe = dof_handler.get_fe();
+    bool        layout_ok = dof_handler.n_dofs() == 3 * tria.n_used_vertices();
+    const auto &fe        = dof_handler.get_fe();
     for (unsigned int i = 0; i < 9; ++i)
       layout_ok = layout_ok && fe.system_to_component_index(i).first == i % 3 &&
                   fe.system_to_component_index(i).second == i / 3;
@@ -166,7 +168,8 @@ namespace ps_checks
         cell->get_dof_indices(dofs);
         for (unsigned int k = 0; k < 3; ++k)
           for (unsigned int q = 0; q < 3; ++q)
-            layout_ok = layout_ok && cell->vertex_dof_index(k, q) == dofs[3 * k + q];
+            layout_ok =
+              layout_ok && cell->vertex_dof_index(k, q) == dofs[3 * k + q];
       }
     PSMPM_CHECK(out, layout_ok);
 
@@ -176,7 +179,7 @@ namespace ps_checks
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const unsigned int c   = cell->active_cell_index();
-        const auto &       ref = ps.refinement().cell(c);
+        const auto        &ref = ps.refinement().cell(c);
         for (unsigned int s = 0; s < 6; ++s)
           for (const auto &l : sample)
             {
@@ -214,7 +217,7 @@ namespace ps_checks
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const unsigned int c   = cell->active_cell_index();
-        const auto &       ref = ps.refinement().cell(c);
+        const auto        &ref = ps.refinement().cell(c);
         for (unsigned int s = 0; s < 6; ++s)
           {
             const unsigned int s2 = (s + 1) % 6;
@@ -245,7 +248,7 @@ namespace ps_checks
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const unsigned int c   = cell->active_cell_index();
-        const auto &       ref = ps.refinement().cell(c);
+        const auto        &ref = ps.refinement().cell(c);
         cell->get_dof_indices(dofs);
         for (unsigned int k = 0; k < 3; ++k)
           {
@@ -292,10 +295,9 @@ namespace ps_checks
                         diff[dofs2[i]].second -= g2[i];
                       }
                     for (const auto &d : diff)
-                      jump_macro =
-                        std::max({jump_macro,
-                                  std::abs(d.second.first),
-                                  d.second.second.norm() / gscale});
+                      jump_macro = std::max({jump_macro,
+                                             std::abs(d.second.first),
+                                             d.second.second.norm() / gscale});
                   }
               }
           }
@@ -304,15 +306,17 @@ namespace ps_checks
     PSMPM_CHECK(out, molecule < tol);
 
     // Linear reproduction with coefficients c_v^q = f(Q_v^q).
-    const auto f = [](const Point<2> &p) { return 0.3 - 1.7 * p[0] + 2.9 * p[1]; };
+    const auto f = [](const Point<2> &p) {
+      return 0.3 - 1.7 * p[0] + 2.9 * p[1];
+    };
     Tensor<1, 2> grad_f;
-    grad_f[0] = -1.7;
-    grad_f[1] = 2.9;
+    grad_f[0]     = -1.7;
+    grad_f[1]     = 2.9;
     double linear = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const unsigned int c   = cell->active_cell_index();
-        const auto &       ref = ps.refinement().cell(c);
+        const auto        &ref = ps.refinement().cell(c);
         for (unsigned int s = 0; s < 6; ++s)
           for (const auto &l : sample)
             {
@@ -328,7 +332,8 @@ namespace ps_checks
                     u += coefficient * values[3 * k + q];
                     gu += coefficient * gradients[3 * k + q];
                   }
-              linear = std::max({linear, std::abs(u - f(p)), (gu - grad_f).norm()});
+              linear =
+                std::max({linear, std::abs(u - f(p)), (gu - grad_f).norm()});
             }
       }
     PSMPM_CHECK(out, linear < tol);
@@ -343,7 +348,7 @@ namespace ps_checks
           for (const auto &p : ps.ps_points(v))
             for (const double l : map(p))
               contains = contains && l > -1e-12;
-          const auto   kind = ps.vertex_kind(v);
+          const auto   kind       = ps.vertex_kind(v);
           unsigned int zero_alpha = 0;
           for (unsigned int q = 0; q < 3; ++q)
             zero_alpha += std::abs(ps.triplet(v, q).alpha) < 1e-12;

@@ -72,16 +72,16 @@ namespace psmpm
 
       void
       evaluate(const unsigned int cell,
-               const Point<2> &   p,
-               double *           values,
-               Tensor<1, 2> *     gradients) const override;
+               const Point<2>    &p,
+               double            *values,
+               Tensor<1, 2>      *gradients) const override;
 
       void
       evaluate(const unsigned int  n,
                const unsigned int *cells,
-               const Point<2> *    points,
-               double *            values,
-               Tensor<1, 2> *      gradients) const override;
+               const Point<2>     *points,
+               double             *values,
+               Tensor<1, 2>       *gradients) const override;
 
       /**
        * Value and tangential derivative of u = g at every vertex of the
@@ -92,10 +92,10 @@ namespace psmpm
        */
       void
       make_dirichlet_constraints(
-        const DoFHandler<2> &               dof_handler,
+        const DoFHandler<2>                &dof_handler,
         const std::set<types::boundary_id> &ids,
-        const Function<2> &                 g,
-        AffineConstraints<double> &         constraints) const override;
+        const Function<2>                  &g,
+        AffineConstraints<double>          &constraints) const override;
 
       /// @name Construction data, for tests and output.
       /// @{

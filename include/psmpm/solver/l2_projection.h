@@ -47,15 +47,15 @@ namespace psmpm
 
       /**
        * Create the mesh, project, fill @p summary (errors.L2, n_dofs,
-       * n_cells, h) and write projection.vtu (projection, exact function,
+       * n_cells, h = the largest cell diameter) and write projection.vtu (projection, exact function,
        * error and, if requested, one basis function on a refined patch
        * mesh), mesh.vtu and ps_refinement.vtu into @p output_directory.
        */
       void
       run(const Mesh::MeshGenerator &mesh,
-          const std::string &        basis_name,
-          const std::string &        output_directory,
-          Postprocess::Summary &     summary,
+          const std::string         &basis_name,
+          const std::string         &output_directory,
+          Postprocess::Summary      &summary,
           MPI_Comm                   comm);
 
       /// "sin(pi*x)*sin(pi*y)" by default; variables x, y; constant pi.
