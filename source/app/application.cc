@@ -250,7 +250,7 @@ end
       Mesh::MeshGenerator  mesh;
       Solver::L2Projection projection;
       std::string          problem, basis;
-      std::string       where = "the command line";
+      std::string          where = "the command line";
       try
         {
           cl = parse_command_line(args);
@@ -332,7 +332,7 @@ end
           prm.leave_subsection();
           solver.quiet = test_output;
           Postprocess::Summary summary;
-          auto status = Solver::MPMSolver::Status::completed;
+          auto                 status = Solver::MPMSolver::Status::completed;
           if (problem == "mpm")
             {
               status = solver.run(dir);

@@ -19,8 +19,8 @@ namespace psmpm
       // per particle, so a type test is fine here.
       if (const auto *ps = dynamic_cast<const PowellSabin *>(&space))
         {
-          const auto bary = Mesh::barycentric_map(ps->control_triangle(from));
-          const auto &Q   = ps->control_triangle(to);
+          const auto  bary = Mesh::barycentric_map(ps->control_triangle(from));
+          const auto &Q    = ps->control_triangle(to);
           FullMatrix<double> W(3, 3);
           for (unsigned int q = 0; q < 3; ++q)
             {

@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <psmpm/mesh/mesh_generator.h>
+#include <psmpm/mesh/triangle_geometry.h>
 
 #include <fstream>
 #include <sstream>
@@ -200,6 +201,76 @@ namespace psmpm
             }
     }
 
+    namespace
+    {
+      /**
+       * deal.II turns clockwise triangles around on reading, which is right
+       * for a mesh that is clockwise throughout (a surface meshed with its
+       * normal down) but hides a folded, tangled mesh. Reject meshes whose
+       * triangles have both orientations (ASCII format 2; other formats
+       * are left to deal.II's reader).
+       */
+      void
+      check_orientation(std::istream &in, const std::string &filename)
+      {
+        std::string line;
+        std::getline(in, line);
+        if (line != "$MeshFormat")
+          return;
+        double version = 0;
+        int    binary  = 1;
+        in >> version >> binary;
+        if (version >= 3 || binary != 0)
+          return;
+        std::map<long, Point<2>> nodes;
+        while (std::getline(in, line) && line != "$Nodes")
+          ;
+        long n = 0;
+        if (!(in >> n))
+          return;
+        for (long i = 0; i < n; ++i)
+          {
+            long   id;
+            double x, y, z;
+            if (!(in >> id >> x >> y >> z))
+              return; // let the reader report the damage
+            nodes[id] = Point<2>(x, y);
+          }
+        while (std::getline(in, line) && line != "$Elements")
+          ;
+        if (!(in >> n))
+          return;
+        long first_ccw = -1, first_cw = -1;
+        for (long i = 0; i < n && std::getline(in >> std::ws, line); ++i)
+          {
+            std::istringstream e(line);
+            long               id, type, n_tags;
+            if (!(e >> id >> type >> n_tags))
+              return;
+            for (long t = 0, tag; t < n_tags; ++t)
+              e >> tag;
+            if (type != 2)
+              continue;
+            long a, b, c;
+            if (!(e >> a >> b >> c) || !nodes.count(a) || !nodes.count(b) ||
+                !nodes.count(c))
+              return;
+            const double area = signed_area({{nodes[a], nodes[b], nodes[c]}});
+            if (area > 0 && first_ccw < 0)
+              first_ccw = id;
+            if (area < 0 && first_cw < 0)
+              first_cw = id;
+          }
+        AssertThrow(first_ccw < 0 || first_cw < 0,
+                    ExcMessage("Mesh/File = " + filename +
+                               ": triangles of both orientations (element " +
+                               std::to_string(first_ccw) +
+                               " counter-clockwise, element " +
+                               std::to_string(first_cw) +
+                               " clockwise): the mesh is inverted or folded."));
+      }
+    } // namespace
+
     std::map<std::string, types::boundary_id>
     MeshGenerator::read_gmsh(Triangulation<2>  &tria,
                              const std::string &filename)
@@ -231,6 +302,9 @@ namespace psmpm
               break;
             }
       }
+      in.clear();
+      in.seekg(0);
+      check_orientation(in, filename);
       in.clear();
       in.seekg(0);
 

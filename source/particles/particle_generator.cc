@@ -59,6 +59,22 @@ namespace psmpm
                   ExcMessage("Particles/Region: need x0 < x1 and y0 < y1."));
     }
 
+    void
+    ParticleGenerator::check_count(const Mesh::MeshGenerator &mesh) const
+    {
+      if (mesh.type == Mesh::MeshGenerator::Type::gmsh)
+        return; // checked against the cell count once the mesh is read
+      const double total =
+        double(mesh.blocks_x) * mesh.blocks_y * per_block_x * per_block_y;
+      AssertThrow(total <= max_particles,
+                  ExcMessage(
+                    "Mesh/Blocks x, Blocks y and Particles/Per block "
+                    "x, Per block y ask for " +
+                    std::to_string(total) +
+                    " particles, more than Particles/Maximum number = " +
+                    std::to_string(max_particles) + "."));
+    }
+
     bool
     ParticleGenerator::in_region(const Point<2> &p) const
     {

@@ -24,18 +24,19 @@ namespace psmpm
     GridSystem::Parameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Mass matrix");
-      prm.declare_entry("Type",
-                        "consistent",
-                        Patterns::Selection(
-                          "consistent|lumped|partially lumped|deactivate|extrapolate"),
-                        "consistent: sparse matrix solved by CG; lumped: "
-                        "row-sum diagonal (no sparse matrix is built); "
-                        "partially lumped: couplings of free-boundary vertices "
-                        "moved to the diagonal; deactivate: functions with a "
-                        "particle diagonal below Threshold x their full-support "
-                        "diagonal set to zero; extrapolate: vertices with such "
-                        "a function follow the linear part of the nearest well "
-                        "supported vertex.");
+      prm.declare_entry(
+        "Type",
+        "consistent",
+        Patterns::Selection(
+          "consistent|lumped|partially lumped|deactivate|extrapolate"),
+        "consistent: sparse matrix solved by CG; lumped: "
+        "row-sum diagonal (no sparse matrix is built); "
+        "partially lumped: couplings of free-boundary vertices "
+        "moved to the diagonal; deactivate: functions with a "
+        "particle diagonal below Threshold x their full-support "
+        "diagonal set to zero; extrapolate: vertices with such "
+        "a function follow the linear part of the nearest well "
+        "supported vertex.");
       prm.declare_entry("Solver tolerance",
                         "1e-12",
                         Patterns::Double(0),
@@ -63,23 +64,23 @@ namespace psmpm
     {
       prm.enter_subsection("Mass matrix");
       const std::string t = prm.get("Type");
-      type = t == "lumped"           ? MassType::lumped :
-             t == "partially lumped" ? MassType::partially_lumped :
-             t == "deactivate"       ? MassType::deactivate :
-             t == "extrapolate"      ? MassType::extrapolate :
-                                       MassType::consistent;
-      threshold      = prm.get_double("Threshold");
-      tolerance      = prm.get_double("Solver tolerance");
-      max_iterations = prm.get_integer("Maximum iterations");
-      preconditioner = prm.get("Preconditioner");
+      type                = t == "lumped"           ? MassType::lumped :
+                            t == "partially lumped" ? MassType::partially_lumped :
+                            t == "deactivate"       ? MassType::deactivate :
+                            t == "extrapolate"      ? MassType::extrapolate :
+                                                      MassType::consistent;
+      threshold           = prm.get_double("Threshold");
+      tolerance           = prm.get_double("Solver tolerance");
+      max_iterations      = prm.get_integer("Maximum iterations");
+      preconditioner      = prm.get("Preconditioner");
       prm.leave_subsection();
       AssertThrow(tolerance > 0 && tolerance < 1,
                   ExcMessage("Mass matrix/Solver tolerance = " +
                              prm_value(tolerance) + ": must lie in (0, 1)."));
     }
 
-    GridSystem::GridSystem(const Parameters &   parameters,
-                           const Basis::Space & space,
+    GridSystem::GridSystem(const Parameters    &parameters,
+                           const Basis::Space  &space,
                            const DoFHandler<2> &dof_handler,
                            MPI_Comm             comm)
       : parameters(parameters)
@@ -88,7 +89,8 @@ namespace psmpm
       , space(space)
       , dof_handler(dof_handler)
       , comm(comm)
-    {}
+    {
+    }
 
     void
     GridSystem::reinit(const std::array<std::set<types::boundary_id>, 2> &fixed,
@@ -176,10 +178,9 @@ namespace psmpm
                 for (unsigned int q = 0; q < dofs_per_vertex; ++q)
                   {
                     const auto g = cell->vertex_dof_index(k, q);
-                    vertex_dofs[v].push_back(
-                      relevant.is_element(g) ?
-                        relevant.index_within_set(g) :
-                        numbers::invalid_unsigned_int);
+                    vertex_dofs[v].push_back(relevant.is_element(g) ?
+                                               relevant.index_within_set(g) :
+                                               numbers::invalid_unsigned_int);
                   }
             }
           for (const auto f : cell->face_indices())
@@ -216,8 +217,8 @@ namespace psmpm
       // int rho phi_i^2 over the whole support, by the centroids of a
       // uniform 8 x 8 split of each triangle: only a scale for the
       // relative thresholds, so a few per mille are good enough.
-      const unsigned int        k = 8, n = dofs_per_cell;
-      std::vector<double>       cell_full(n_cells * n, 0.), values(n);
+      const unsigned int  k = 8, n = dofs_per_cell;
+      std::vector<double> cell_full(n_cells * n, 0.), values(n);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -266,7 +267,7 @@ namespace psmpm
     }
 
     void
-    GridSystem::scatter(const double *                 cell_values,
+    GridSystem::scatter(const double                  *cell_values,
                         const unsigned int             stride,
                         const unsigned int             offset,
                         TrilinosWrappers::MPI::Vector &target) const
@@ -286,7 +287,7 @@ namespace psmpm
 
     void
     GridSystem::to_local(const TrilinosWrappers::MPI::Vector &owned_vector,
-                         std::vector<double> &                local) const
+                         std::vector<double>                 &local) const
     {
       auto &g = const_cast<TrilinosWrappers::MPI::Vector &>(ghosted);
       g       = owned_vector;
@@ -296,14 +297,23 @@ namespace psmpm
     }
 
     std::vector<bool>
-    GridSystem::poorly_supported_vertices(const std::vector<double> &diagonal) const
+    GridSystem::poorly_supported_vertices(
+      const std::vector<double> &diagonal) const
     {
+      // Hysteresis: a vertex that was poorly supported stays so until its
+      // support has doubled past the bound, so that particles hovering at
+      // the bound do not switch the discrete space back and forth.
       std::vector<bool> outer(vertex_dofs.size(), false);
       for (unsigned int v = 0; v < vertex_dofs.size(); ++v)
-        for (const unsigned int l : vertex_dofs[v])
-          if (l != numbers::invalid_unsigned_int &&
-              diagonal[l] < parameters.threshold * local_full_diagonal[l])
-            outer[v] = true;
+        {
+          const double bound =
+            parameters.threshold *
+            (!previous_outer.empty() && previous_outer[v] ? 2. : 1.);
+          for (const unsigned int l : vertex_dofs[v])
+            if (l != numbers::invalid_unsigned_int &&
+                diagonal[l] < bound * local_full_diagonal[l])
+              outer[v] = true;
+        }
       return outer;
     }
 
@@ -362,7 +372,7 @@ namespace psmpm
         return false;
       previous_outer = outer;
 
-      const auto &vertices = dof_handler.get_triangulation().get_vertices();
+      const auto  &vertices  = dof_handler.get_triangulation().get_vertices();
       unsigned int n_treated = 0;
       for (unsigned int d = 0; d < 2; ++d)
         {
@@ -372,7 +382,7 @@ namespace psmpm
               if (!outer[v])
                 continue;
               // Nearest well supported vertex, searching ring by ring.
-              unsigned int          from = numbers::invalid_unsigned_int;
+              unsigned int              from = numbers::invalid_unsigned_int;
               std::vector<unsigned int> ring = {v};
               std::set<unsigned int>    seen = {v};
               for (unsigned int layer = 0;
@@ -393,10 +403,11 @@ namespace psmpm
                 }
               FullMatrix<double> W;
               if (from != numbers::invalid_unsigned_int)
-                W = Basis::extrapolation_weights(space,
-                                                 dof_handler.get_triangulation(),
-                                                 from,
-                                                 v);
+                W =
+                  Basis::extrapolation_weights(space,
+                                               dof_handler.get_triangulation(),
+                                               from,
+                                               v);
               for (unsigned int q = 0; q < dofs_per_vertex; ++q)
                 {
                   const unsigned int l = vertex_dofs[v][q];
@@ -535,12 +546,12 @@ namespace psmpm
         }
       writable.compress(VectorOperation::add);
       TrilinosWrappers::MPI::Vector rhs(owned, comm);
-      rhs = writable;
-      x   = 0;
+      rhs               = writable;
+      x                 = 0;
       const double norm = rhs.l2_norm();
       if (norm == 0)
         return 0;
-      SolverControl control(parameters.max_iterations,
+      SolverControl                           control(parameters.max_iterations,
                             parameters.tolerance * norm,
                             false,
                             false);

@@ -108,6 +108,13 @@ namespace psmpm
         Patterns::Double(0),
         "dt = C h_min / c_p for the automatic time step "
         "(c_p: p-wave speed, h_min: smallest triangle height).");
+      prm.declare_entry(
+        "Check stability bound",
+        "true",
+        Patterns::Bool(),
+        "Reject a fixed Time step above h_min/c_p and a Courant "
+        "number above 1 before the run. Switch off only to "
+        "measure stability limits (contrib/stability_study.py).");
       prm.leave_subsection();
 
       prm.enter_subsection("Output");
@@ -147,6 +154,7 @@ namespace psmpm
     {
       mesh_generator.parse_parameters(prm);
       particle_generator.parse_parameters(prm);
+      particle_generator.check_count(mesh_generator);
       material.parse_parameters(prm);
       grid_parameters.parse_parameters(prm);
       prm.enter_subsection("Mass matrix");
@@ -179,15 +187,16 @@ namespace psmpm
       prm.leave_subsection();
 
       prm.enter_subsection("Time");
-      end_time       = prm.get_double("End time");
-      fixed_step     = prm.get_double("Time step");
-      courant_number = prm.get_double("Courant number");
+      end_time        = prm.get_double("End time");
+      fixed_step      = prm.get_double("Time step");
+      courant_number  = prm.get_double("Courant number");
+      check_time_step = prm.get_bool("Check stability bound");
       prm.leave_subsection();
       AssertThrow(end_time > 0, ExcMessage("Time/End time must be positive."));
-      AssertThrow(courant_number > 0 && courant_number <= 1,
-                  ExcMessage(
-                    "Time/Courant number = " + prm_value(courant_number) +
-                    ": must lie in (0, 1]."));
+      AssertThrow(
+        courant_number > 0 && (courant_number <= 1 || !check_time_step),
+        ExcMessage("Time/Courant number = " + prm_value(courant_number) +
+                   ": must lie in (0, 1]."));
 
       prm.enter_subsection("Output");
       output_interval = prm.get_integer("Interval");
@@ -247,7 +256,7 @@ namespace psmpm
       if (fixed_step > 0)
         {
           AssertThrow(
-            fixed_step <= bound,
+            fixed_step <= bound || !check_time_step,
             ExcMessage(
               "Time/Time step = " + prm_value(fixed_step) +
               " exceeds the stability bound h_min/c_p = " + prm_value(bound) +
@@ -617,7 +626,8 @@ namespace psmpm
               ++error_history.n;
             }
           else // "-": not computed at this step (see Output/Error interval)
-            for (const auto &c : {"displacement_L2", "velocity_L2", "stress_L2"})
+            for (const auto &c :
+                 {"displacement_L2", "velocity_L2", "stress_L2"})
               statistics.add_value(c, std::string("-"));
           if (track)
             record_tracked_particle();

@@ -15,7 +15,8 @@ main(int argc, char **argv)
     {
       psmpm::Solver::MPMSolver solver(MPI_COMM_WORLD);
       configure(solver,
-                {"Basis/Type=powell-sabin", "Mesh/Blocks x=" + std::to_string(1 << i)});
+                {"Basis/Type=powell-sabin",
+                 "Mesh/Blocks x=" + std::to_string(1 << i)});
       while (solver.get_time() < 0.02 - 1e-12)
         solver.do_time_step(1e-5);
       error[i] = solver.compute_errors().displacement;

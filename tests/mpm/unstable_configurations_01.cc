@@ -23,37 +23,45 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out("output");
-  const std::string                prm = std::string(PSMPM_SOURCE_DIR) + "/prm/";
+  const std::string prm = std::string(PSMPM_SOURCE_DIR) + "/prm/";
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
-    {"soil_column_small.prm", {"Mesh/Blocks x=2", "Mesh/Blocks y=16", "Time/End time=0.2"}},
+    {"soil_column_small.prm",
+     {"Mesh/Blocks x=2", "Mesh/Blocks y=16", "Time/End time=0.2"}},
     {"soil_column_large.prm", {"Mesh/Blocks y=8", "Time/End time=0.15"}}};
   for (const auto &c : cases)
     {
-      std::vector<std::string> args = {prm + c.first, "--set", "Output directory=run",
-                                       "--set", "Output/Interval=50", "--set",
+      std::vector<std::string> args = {prm + c.first,
+                                       "--set",
+                                       "Output directory=run",
+                                       "--set",
+                                       "Output/Interval=50",
+                                       "--set",
                                        "Output/Test output=true"};
       for (const auto &s : c.second)
         args.insert(args.end(), {"--set", s});
       std::filesystem::remove_all("run");
       std::ostringstream captured;
-      auto *old = std::cout.rdbuf(captured.rdbuf());
-      const int code = psmpm::App::run(args, MPI_COMM_WORLD);
+      auto              *old  = std::cout.rdbuf(captured.rdbuf());
+      const int          code = psmpm::App::run(args, MPI_COMM_WORLD);
       std::cout.rdbuf(old);
       const std::string summary = read("run/summary.json");
       out << c.first << ": exit code " << code << std::endl;
       PSMPM_CHECK(out, code == psmpm::App::unstable);
-      PSMPM_CHECK(out, summary.find("\"status\": \"unstable\"") != std::string::npos);
+      PSMPM_CHECK(out,
+                  summary.find("\"status\": \"unstable\"") !=
+                    std::string::npos);
       PSMPM_CHECK(out, summary.find("\"reason\":") != std::string::npos);
       PSMPM_CHECK(out, summary.find("\"failed_step\":") != std::string::npos);
       // The series of outputs is complete and holds no NaN.
-      const std::string pvd = read("run/particles.pvd");
+      const std::string pvd   = read("run/particles.pvd");
       const std::string stats = read("run/statistics.txt");
       PSMPM_CHECK(out, pvd.find("</VTKFile>") != std::string::npos);
       PSMPM_CHECK(out, stats.find("nan") == std::string::npos);
       bool pieces = true;
       for (const auto &f : std::filesystem::directory_iterator("run"))
         if (f.path().extension() == ".vtu")
-          pieces = pieces && read(f.path()).find("</VTKFile>") != std::string::npos;
+          pieces =
+            pieces && read(f.path()).find("</VTKFile>") != std::string::npos;
       PSMPM_CHECK(out, pieces);
     }
 }

@@ -13,9 +13,14 @@
 using namespace psmpm;
 
 Postprocess::ReferenceSolution
-make_reference(const std::string &type, const double rho, const double E,
-               const double L, const double H, const double g, const unsigned int n = 2000,
-               const double v0 = 0.1)
+make_reference(const std::string &type,
+               const double       rho,
+               const double       E,
+               const double       L,
+               const double       H,
+               const double       g,
+               const unsigned int n  = 2000,
+               const double       v0 = 0.1)
 {
   ParameterHandler prm;
   Postprocess::ReferenceSolution::declare_parameters(prm);
@@ -40,7 +45,8 @@ main()
   const double  H = 25, rho = 1, E = 5e4, g = 9.81;
   auto          column = make_reference("soil column", rho, E, 2, H, g);
 
-  double closed_vs_series = 0, at_zero = 0, bottom = 0, top_stress = 0, scale = 0;
+  double closed_vs_series = 0, at_zero = 0, bottom = 0, top_stress = 0,
+         scale = 0;
   for (const double t : {0., 0.01, 0.05, 0.13, 0.3, 0.5})
     {
       for (unsigned int i = 0; i <= 50; ++i)
@@ -48,13 +54,18 @@ main()
           const double y = H * i / 50.;
           const double u = column.evaluate(Point<2>(1, y), t).displacement[1];
           closed_vs_series =
-            std::max(closed_vs_series, std::abs(u - column.soil_column_series(y, t, 4000)));
+            std::max(closed_vs_series,
+                     std::abs(u - column.soil_column_series(y, t, 4000)));
           scale = std::max(scale, std::abs(u));
           if (t == 0)
             at_zero = std::max(at_zero, std::abs(u));
         }
-      bottom     = std::max(bottom, std::abs(column.evaluate(Point<2>(1, 0), t).displacement[1]));
-      top_stress = std::max(top_stress, std::abs(column.evaluate(Point<2>(1, H), t).stress[1][1]));
+      bottom =
+        std::max(bottom,
+                 std::abs(column.evaluate(Point<2>(1, 0), t).displacement[1]));
+      top_stress =
+        std::max(top_stress,
+                 std::abs(column.evaluate(Point<2>(1, H), t).stress[1][1]));
     }
   out << "column: largest |u| / (rho g H^2 / E) = " << std::setprecision(4)
       << scale / (rho * g * H * H / E) << std::endl;
@@ -64,9 +75,11 @@ main()
   PSMPM_CHECK(out, top_stress < 1e-12 * rho * g * H);
   // Static limit of the mean: the time average of u is u_static; at
   // t = 2H/c (half a period) the column is at twice its static sag.
-  const double c    = std::sqrt(E / rho);
-  const double sag  = column.evaluate(Point<2>(1, H), 2 * H / c).displacement[1];
-  PSMPM_CHECK(out, std::abs(sag - (-rho * g * H * H / E)) < 1e-12 * rho * g * H * H / E);
+  const double c   = std::sqrt(E / rho);
+  const double sag = column.evaluate(Point<2>(1, H), 2 * H / c).displacement[1];
+  PSMPM_CHECK(out,
+              std::abs(sag - (-rho * g * H * H / E)) <
+                1e-12 * rho * g * H * H / E);
 
   // ULFEM against the analytic small-deformation solutions: errors shrink
   // by about 4 when the elements are halved (second order).
@@ -77,12 +90,14 @@ main()
         {
           const unsigned int n = 200 << level;
           // Small deformation: bar strain 1e-7, column strain ~ 5e-3.
-          auto exact = which == "bar" ?
-                         make_reference("vibrating bar", 1, 100, 25, 2, 0, 2, 1e-6) :
-                         make_reference("soil column", rho, E, 2, H, g);
-          auto ulfem = which == "bar" ?
-                         make_reference("vibrating bar ulfem", 1, 100, 25, 2, 0, n, 1e-6) :
-                         make_reference("soil column ulfem", rho, E, 2, H, g, n);
+          auto exact =
+            which == "bar" ?
+              make_reference("vibrating bar", 1, 100, 25, 2, 0, 2, 1e-6) :
+              make_reference("soil column", rho, E, 2, H, g);
+          auto ulfem =
+            which == "bar" ?
+              make_reference("vibrating bar ulfem", 1, 100, 25, 2, 0, n, 1e-6) :
+              make_reference("soil column ulfem", rho, E, 2, H, g, n);
           const double t = which == "bar" ? 2.0 : 0.07;
           ulfem.advance_to(t);
           double e = 0, s = 0;
@@ -91,14 +106,15 @@ main()
               const Point<2> X = which == "bar" ? Point<2>(25 * i / 100., 1) :
                                                   Point<2>(1, H * i / 100.);
               const unsigned int d = which == "bar" ? 0 : 1;
-              e = std::max(e, std::abs(ulfem.evaluate(X, t).displacement[d] -
-                                       exact.evaluate(X, t).displacement[d]));
+              e                    = std::max(e,
+                           std::abs(ulfem.evaluate(X, t).displacement[d] -
+                                    exact.evaluate(X, t).displacement[d]));
               s = std::max(s, std::abs(exact.evaluate(X, t).displacement[d]));
             }
           err[level] = e / s;
         }
-      out << which << ": ULFEM relative errors " << std::setprecision(2) << err[0] << ", "
-          << err[1] << std::endl;
+      out << which << ": ULFEM relative errors " << std::setprecision(2)
+          << err[0] << ", " << err[1] << std::endl;
       PSMPM_CHECK(out, err[1] < 2e-3);
       PSMPM_CHECK(out, err[0] / err[1] > 1.8);
     }

@@ -25,7 +25,7 @@ namespace psmpm
      * is its value (W = 1).
      */
     FullMatrix<double>
-    extrapolation_weights(const Space &           space,
+    extrapolation_weights(const Space            &space,
                           const Triangulation<2> &tria,
                           const unsigned int      from,
                           const unsigned int      to);

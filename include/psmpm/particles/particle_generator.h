@@ -51,6 +51,11 @@ namespace psmpm
       std::vector<double> region; ///< empty or {x0, y0, x1, y1}
       double              max_particles = 5e7;
 
+      /// Refuse particle counts above Maximum number before any mesh is
+      /// built (block meshes).
+      void
+      check_count(const Mesh::MeshGenerator &mesh) const;
+
     private:
       bool
       in_region(const Point<2> &p) const;

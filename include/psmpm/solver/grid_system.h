@@ -75,17 +75,18 @@ namespace psmpm
 
       struct SolveStatistics
       {
-        unsigned int iterations       = 0;
-        double       min_diagonal     = 0; ///< of the lumped mass, active DoFs
-        double       max_diagonal     = 0;
+        unsigned int iterations   = 0;
+        double       min_diagonal = 0; ///< of the lumped mass, active DoFs
+        double       max_diagonal = 0;
         double       min_relative_diagonal = 0; ///< min M_ii / full M_ii
         double       condition_number = 0; ///< CG estimate, largest of the step
         unsigned int n_empty_dofs     = 0; ///< DoFs with no particle support
-        unsigned int n_treated_dofs   = 0; ///< lumped, deactivated or extrapolated
+        unsigned int n_treated_dofs =
+          0; ///< lumped, deactivated or extrapolated
       };
 
-      GridSystem(const Parameters &   parameters,
-                 const Basis::Space & space,
+      GridSystem(const Parameters    &parameters,
+                 const Basis::Space  &space,
                  const DoFHandler<2> &dof_handler,
                  MPI_Comm             comm);
 
@@ -170,17 +171,18 @@ namespace psmpm
         return parameters.type != MassType::lumped;
       }
       void
-      scatter(const double *                 cell_values,
+      scatter(const double                  *cell_values,
               const unsigned int             stride,
               const unsigned int             offset,
               TrilinosWrappers::MPI::Vector &target) const;
       void
       to_local(const TrilinosWrappers::MPI::Vector &owned_vector,
-               std::vector<double> &                local) const;
+               std::vector<double>                 &local) const;
       void
       compute_full_support_diagonal(const double density);
       void
-      build_vertex_tables(const std::array<std::set<types::boundary_id>, 2> &fixed);
+      build_vertex_tables(
+        const std::array<std::set<types::boundary_id>, 2> &fixed);
       void
       build_sparsity();
       std::vector<bool>
@@ -192,18 +194,18 @@ namespace psmpm
       unsigned int
       solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
 
-      const Basis::Space &                          space;
-      const DoFHandler<2> &                         dof_handler;
-      MPI_Comm                                      comm;
-      IndexSet                                      owned;
-      IndexSet                                      relevant;
-      std::vector<types::global_dof_index>          relevant_global;
-      std::array<AffineConstraints<double>, 2>      dirichlet;
-      std::array<AffineConstraints<double>, 2>      active_constraints;
-      std::array<TrilinosWrappers::SparseMatrix, 2> matrix;
+      const Basis::Space                                 &space;
+      const DoFHandler<2>                                &dof_handler;
+      MPI_Comm                                            comm;
+      IndexSet                                            owned;
+      IndexSet                                            relevant;
+      std::vector<types::global_dof_index>                relevant_global;
+      std::array<AffineConstraints<double>, 2>            dirichlet;
+      std::array<AffineConstraints<double>, 2>            active_constraints;
+      std::array<TrilinosWrappers::SparseMatrix, 2>       matrix;
       std::array<TrilinosWrappers::PreconditionJacobi, 2> jacobi;
       std::array<TrilinosWrappers::PreconditionAMG, 2>    amg;
-      TrilinosWrappers::MPI::Vector                 lumped;   // owned
+      TrilinosWrappers::MPI::Vector                       lumped; // owned
       TrilinosWrappers::MPI::Vector writable; // owned + writable ghosts
       TrilinosWrappers::MPI::Vector ghosted;  // owned + readable ghosts
       std::vector<double>           local_lumped;

@@ -47,9 +47,10 @@ namespace psmpm
 
       /**
        * Create the mesh, project, fill @p summary (errors.L2, n_dofs,
-       * n_cells, h = the largest cell diameter) and write projection.vtu (projection, exact function,
-       * error and, if requested, one basis function on a refined patch
-       * mesh), mesh.vtu and ps_refinement.vtu into @p output_directory.
+       * n_cells, h = the largest cell diameter) and write projection.vtu
+       * (projection, exact function, error and, if requested, one basis
+       * function on a refined patch mesh), mesh.vtu and ps_refinement.vtu into
+       * @p output_directory.
        */
       void
       run(const Mesh::MeshGenerator &mesh,

@@ -162,6 +162,7 @@ namespace psmpm
       GridSystem::Parameters                  grid_parameters;
       std::string                             basis_name;
       std::string                             mass_type_name;
+      bool                                    check_time_step = true;
       std::string                             velocity_expression;
       std::string                             velocity_constants;
       Tensor<1, 2>                            gravity;

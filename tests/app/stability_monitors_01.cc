@@ -1,0 +1,86 @@
+// Every stability monitor stops a run built to trip it: status
+// "unstable" with the reason in summary.json and exit code 3.
+#include <psmpm/app/application.h>
+
+#include "../tests.h"
+
+#include <filesystem>
+#include <sstream>
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream                    out("output");
+  const std::vector<std::string>   free = {"Boundary conditions/Fixed x=",
+                                           "Boundary conditions/Fixed y=",
+                                           "Reference solution/Type=none"};
+  struct Case
+  {
+    std::string              name;
+    std::vector<std::string> sets;
+    std::string              reason;
+  };
+  std::vector<Case> cases = {
+    {"non-finite values",
+     {"Initial conditions/Velocity=1e308*1e308*sin(x); 0"},
+     "non-finite"},
+    {"particle leaving the mesh",
+     {"Initial conditions/Velocity=0; -20",
+      "Mass matrix/Type=lumped",
+      "Time/End time=0.5",
+      "Time/Time step=1e-3"},
+     "left the mesh"},
+    {"non-positive volume",
+     {"Initial conditions/Velocity=-500*(x-12.5); -500*(y-1)",
+      "Mass matrix/Type=lumped",
+      "Material/Young's modulus=1e-6",
+      "Time/Time step=1e-2",
+      "Time/End time=0.05"},
+     "non-positive particle volume"},
+    {"solver not converging",
+     {"Mass matrix/Maximum iterations=1", "Mass matrix/Solver tolerance=1e-14"},
+     "did not converge"},
+    {"energy growth",
+     {"Geometry/Length=4",
+      "Geometry/Height=10",
+      "Mesh/Blocks x=4",
+      "Mesh/Blocks y=10",
+      "Particles/Per block x=3",
+      "Particles/Per block y=3",
+      "Particles/Region=1, 6, 3, 9.5",
+      "Initial conditions/Velocity=0; 0",
+      "Body force/Gravity=0, -9.81",
+      "Material/Young's modulus=1e4",
+      "Time/Time step=1e-3",
+      "Time/End time=0.8"},
+     "total energy grew"}};
+  for (auto &c : cases)
+    {
+      if (c.name != "solver not converging")
+        c.sets.insert(c.sets.end(), free.begin(), free.end());
+      std::vector<std::string> args = {"--set",
+                                       "Output directory=run",
+                                       "--set",
+                                       "Output/Test output=true"};
+      for (const auto &s : c.sets)
+        args.insert(args.end(), {"--set", s});
+      std::filesystem::remove_all("run");
+      std::ostringstream captured;
+      auto              *old  = std::cout.rdbuf(captured.rdbuf());
+      const int          code = psmpm::App::run(args, MPI_COMM_WORLD);
+      std::cout.rdbuf(old);
+      std::ifstream     in("run/summary.json");
+      std::stringstream summary;
+      summary << in.rdbuf();
+      out << c.name << ": exit code " << code << std::endl;
+      PSMPM_CHECK(out, code == psmpm::App::unstable);
+      PSMPM_CHECK(out,
+                  summary.str().find("\"status\": \"unstable\"") !=
+                    std::string::npos);
+      const bool named = summary.str().find(c.reason) != std::string::npos;
+      PSMPM_CHECK(out, named);
+      if (!named)
+        out << summary.str();
+    }
+}
