@@ -106,8 +106,9 @@ namespace psmpm
         "Courant number",
         "0.5",
         Patterns::Double(0),
-        "dt = C h_min / c_p for the automatic time step "
-        "(c_p: p-wave speed, h_min: smallest triangle height).");
+        "dt = C f h_min / c_p for the automatic time step (c_p: p-wave "
+        "speed, h_min: smallest triangle height, f: measured stability "
+        "factor of the basis and mass matrix, 0.4 to 1.5, doc/stability.md).");
       prm.declare_entry(
         "Check stability bound",
         "true",
@@ -265,7 +266,13 @@ namespace psmpm
           time_step = fixed_step;
         }
       else
-        time_step = courant_number * bound;
+        time_step = courant_number * stability_factor() * bound;
+      if (time_step > stability_factor() * bound)
+        time_step_warning =
+          "Time/Time step = " + prm_value(time_step) +
+          " is above the measured stability limit of this basis and mass "
+          "matrix, about " + prm_value(stability_factor() * bound) +
+          " (doc/stability.md); the run may become unstable.";
 
       // Particles of the locally owned cells, with their initial velocity.
       const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
@@ -306,6 +313,19 @@ namespace psmpm
         }
       particles.sort_by_cell(triangulation.n_active_cells());
       evaluate_shape_functions();
+    }
+
+    double
+    MPMSolver::stability_factor() const
+    {
+      // Largest stable step over h_min/c_p, measured by bisection on the
+      // vibrating bar with criss-cross blocks (contrib/stability_study.py:
+      // P1 0.64 consistent, 1.58 lumped; Powell-Sabin 0.43 and 1.61),
+      // rounded down.
+      const bool lumped = grid_parameters.type == GridSystem::MassType::lumped;
+      if (basis_name == "linear")
+        return lumped ? 1.5 : 0.6;
+      return lumped ? 1.5 : 0.4;
     }
 
     void
@@ -693,7 +713,7 @@ namespace psmpm
                       comm);
         v = total;
       }
-      tracked_history.push_back({time, v[3], v[4], v[5], v[6]});
+      tracked_history.push_back({{time, v[3], v[4], v[5], v[6]}});
       tracked_velocity2 += (v[4] - v[6]) * (v[4] - v[6]);
       tracked_displacement2 += (v[3] - v[5]) * (v[3] - v[5]);
     }
@@ -786,6 +806,8 @@ namespace psmpm
       postprocess(0, 0);
       write_output(0);
 
+      if (!time_step_warning.empty())
+        pcout << "psmpm: warning: " << time_step_warning << std::endl;
       pcout << "psmpm: " << space->name() << " basis, " << dof_handler.n_dofs()
             << " DoFs, " << Utilities::MPI::sum(particles.size(), comm)
             << " particles, dt = " << time_step << ", end time = " << end_time
@@ -825,6 +847,8 @@ namespace psmpm
           summary.set("failed_time", failed_time);
         }
       summary.set_integer("steps", step);
+      if (!time_step_warning.empty())
+        summary.set("warning", time_step_warning);
       summary.set_integer("n_dofs", dof_handler.n_dofs());
       summary.set_integer("n_cells", triangulation.n_active_cells());
       summary.set_integer("n_particles",

@@ -124,6 +124,10 @@ namespace psmpm
       bool quiet = false;
 
     private:
+      /// Largest stable time step of the basis and mass matrix over
+      /// h_min / c_p (measured, see doc/stability.md).
+      double
+      stability_factor() const;
       void
       evaluate_shape_functions();
       void
@@ -163,6 +167,7 @@ namespace psmpm
       std::string                             basis_name;
       std::string                             mass_type_name;
       bool                                    check_time_step = true;
+      std::string time_step_warning;
       std::string                             velocity_expression;
       std::string                             velocity_constants;
       Tensor<1, 2>                            gravity;
