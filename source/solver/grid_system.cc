@@ -26,7 +26,7 @@ namespace psmpm
       prm.enter_subsection("Mass matrix");
       prm.declare_entry(
         "Type",
-        "consistent",
+        "partially lumped",
         Patterns::Selection(
           "consistent|lumped|partially lumped|deactivate|extrapolate"),
         "consistent: sparse matrix solved by CG; lumped: "

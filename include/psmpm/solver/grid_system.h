@@ -66,7 +66,7 @@ namespace psmpm
         void
         parse_parameters(ParameterHandler &prm);
 
-        MassType     type           = MassType::consistent;
+        MassType     type           = MassType::partially_lumped;
         double       tolerance      = 1e-12;
         unsigned int max_iterations = 1000;
         std::string  preconditioner = "jacobi";
