@@ -325,7 +325,11 @@ namespace psmpm
       for (const unsigned int c : owned_cells)
         for (unsigned int k = 0; k < dofs_per_cell; ++k)
           filled[c] |= cell_lumped[c * dofs_per_cell + k] > 0;
-      Utilities::MPI::max(filled, comm, filled);
+      {
+        std::vector<int> global(n_cells);
+        Utilities::MPI::max(filled, comm, global);
+        filled.swap(global);
+      }
 
       std::vector<bool> boundary_dof(relevant_global.size(), false);
       unsigned int      n_treated = 0;

@@ -1,8 +1,6 @@
 // Bad input is rejected before anything is written: a non-zero exit code
 // (2) and a message that names the entry (or option) and the file.
-#include <psmpm/app/application.h>
-
-#include "../tests.h"
+#include "../app_tests.h"
 
 #include <filesystem>
 #include <sstream>
@@ -82,18 +80,16 @@ main(int argc, char **argv)
           args.push_back("case.prm");
         }
       args.insert(args.end(), c.extra_args.begin(), c.extra_args.end());
-      std::ostringstream captured;
-      auto              *old  = std::cerr.rdbuf(captured.rdbuf());
-      const int          code = psmpm::App::run(args, MPI_COMM_WORLD);
-      std::cerr.rdbuf(old);
-      bool mentions = true;
+      std::string screen, message;
+      const int   code     = run_app(args, screen, message);
+      bool        mentions = true;
       for (const auto &m : c.must_mention)
-        mentions = mentions && captured.str().find(m) != std::string::npos;
+        mentions = mentions && message.find(m) != std::string::npos;
       out << c.name << ": exit code " << code << std::endl;
       PSMPM_CHECK(out, code == psmpm::App::bad_input);
       PSMPM_CHECK(out, mentions);
       PSMPM_CHECK(out, !std::filesystem::exists("bad_output"));
       if (!mentions || code != psmpm::App::bad_input)
-        out << "  message: " << captured.str();
+        out << "  message: " << message;
     }
 }

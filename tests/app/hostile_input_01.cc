@@ -2,9 +2,7 @@
 // corrupted parameter files, broken and inverted Gmsh meshes and particle
 // counts that would not fit in memory all end with a clear error and exit
 // code 2, and nothing is written.
-#include <psmpm/app/application.h>
-
-#include "../tests.h"
+#include "../app_tests.h"
 
 #include <filesystem>
 #include <random>
@@ -13,14 +11,8 @@
 int
 run_quietly(const std::vector<std::string> &args, std::string &message)
 {
-  std::ostringstream err, out;
-  auto              *old_err = std::cerr.rdbuf(err.rdbuf());
-  auto              *old_out = std::cout.rdbuf(out.rdbuf());
-  const int          code    = psmpm::App::run(args, MPI_COMM_WORLD);
-  std::cerr.rdbuf(old_err);
-  std::cout.rdbuf(old_out);
-  message = err.str();
-  return code;
+  std::string screen;
+  return run_app(args, screen, message);
 }
 
 int

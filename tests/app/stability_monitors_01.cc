@@ -1,8 +1,6 @@
 // Every stability monitor stops a run built to trip it: status
 // "unstable" with the reason in summary.json and exit code 3.
-#include <psmpm/app/application.h>
-
-#include "../tests.h"
+#include "../app_tests.h"
 
 #include <filesystem>
 #include <sstream>
@@ -66,21 +64,17 @@ main(int argc, char **argv)
       for (const auto &s : c.sets)
         args.insert(args.end(), {"--set", s});
       std::filesystem::remove_all("run");
-      std::ostringstream captured;
-      auto              *old  = std::cout.rdbuf(captured.rdbuf());
-      const int          code = psmpm::App::run(args, MPI_COMM_WORLD);
-      std::cout.rdbuf(old);
-      std::ifstream     in("run/summary.json");
-      std::stringstream summary;
-      summary << in.rdbuf();
+      std::string       screen, errors;
+      const int         code    = run_app(args, screen, errors);
+      const std::string summary = read_file("run/summary.json");
       out << c.name << ": exit code " << code << std::endl;
       PSMPM_CHECK(out, code == psmpm::App::unstable);
       PSMPM_CHECK(out,
-                  summary.str().find("\"status\": \"unstable\"") !=
+                  summary.find("\"status\": \"unstable\"") !=
                     std::string::npos);
-      const bool named = summary.str().find(c.reason) != std::string::npos;
+      const bool named = summary.find(c.reason) != std::string::npos;
       PSMPM_CHECK(out, named);
       if (!named)
-        out << summary.str();
+        out << summary;
     }
 }

@@ -3,21 +3,10 @@
 // consistent Powell-Sabin MPM fails. The default mass matrix strategy
 // completes the run with bounded energy; no strategy produces NaN without
 // reporting it (it completes, or stops as unstable with a reason).
-#include <psmpm/app/application.h>
-
-#include "../tests.h"
+#include "../app_tests.h"
 
 #include <filesystem>
 #include <sstream>
-
-std::string
-read(const std::string &file)
-{
-  std::ifstream     in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 int
 main(int argc, char **argv)
@@ -32,29 +21,42 @@ main(int argc, char **argv)
   prm.leave_subsection();
   out << "default strategy: " << default_type << std::endl;
 
-  for (const std::string type :
-       {default_type, std::string("consistent"), std::string("lumped"),
-        std::string("deactivate"), std::string("extrapolate")})
+  for (const std::string type : {default_type,
+                                 std::string("consistent"),
+                                 std::string("lumped"),
+                                 std::string("deactivate"),
+                                 std::string("extrapolate")})
     {
-      std::vector<std::string> args = {
-        std::string(PSMPM_SOURCE_DIR) + "/prm/soil_column_large.prm",
-        "--set", "Output directory=run", "--set", "Output/Interval=0",
-        "--set", "Output/Test output=true", "--set", "Mesh/Blocks y=8",
-        "--set", "Time/End time=0.15", "--set", "Mass matrix/Type=" + type};
+      std::vector<std::string> args = {std::string(PSMPM_SOURCE_DIR) +
+                                         "/prm/soil_column_large.prm",
+                                       "--set",
+                                       "Output directory=run",
+                                       "--set",
+                                       "Output/Interval=0",
+                                       "--set",
+                                       "Output/Test output=true",
+                                       "--set",
+                                       "Mesh/Blocks y=8",
+                                       "--set",
+                                       "Time/End time=0.15",
+                                       "--set",
+                                       "Mass matrix/Type=" + type};
       std::filesystem::remove_all("run");
-      std::ostringstream captured;
-      auto *old = std::cout.rdbuf(captured.rdbuf());
-      const int code = psmpm::App::run(args, MPI_COMM_WORLD);
-      std::cout.rdbuf(old);
-      const std::string summary = read("run/summary.json");
-      const std::string stats   = read("run/statistics.txt");
-      const bool completed = summary.find("\"status\": \"completed\"") != std::string::npos;
-      const bool reported  = summary.find("\"status\": \"unstable\"") != std::string::npos &&
-                            summary.find("\"reason\":") != std::string::npos;
-      out << type << ": " << (completed ? "completed" : "unstable") << std::endl;
+      std::string       screen, errors;
+      const int         code    = run_app(args, screen, errors);
+      const std::string summary = read_file("run/summary.json");
+      const std::string stats   = read_file("run/statistics.txt");
+      const bool        completed =
+        summary.find("\"status\": \"completed\"") != std::string::npos;
+      const bool reported =
+        summary.find("\"status\": \"unstable\"") != std::string::npos &&
+        summary.find("\"reason\":") != std::string::npos;
+      out << type << ": " << (completed ? "completed" : "unstable")
+          << std::endl;
       PSMPM_CHECK(out, (completed && code == 0) || (reported && code == 3));
-      PSMPM_CHECK(out, stats.find("nan") == std::string::npos &&
-                         stats.find("inf") == std::string::npos);
+      PSMPM_CHECK(out,
+                  stats.find("nan") == std::string::npos &&
+                    stats.find("inf") == std::string::npos);
       if (type == default_type)
         PSMPM_CHECK(out, completed);
     }

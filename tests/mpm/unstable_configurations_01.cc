@@ -3,21 +3,10 @@
 // 2 x 16 blocks with dt = 1e-3; large on 1 x 8 blocks) end with status
 // "unstable", a reason and the failed step in summary.json, exit code 3,
 // and the output written before stays readable and finite.
-#include <psmpm/app/application.h>
-
-#include "../tests.h"
+#include "../app_tests.h"
 
 #include <filesystem>
 #include <sstream>
-
-std::string
-read(const std::string &file)
-{
-  std::ifstream     in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 int
 main(int argc, char **argv)
@@ -27,7 +16,9 @@ main(int argc, char **argv)
   const std::string prm = std::string(PSMPM_SOURCE_DIR) + "/prm/";
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
     {"soil_column_small.prm",
-     {"Mesh/Blocks x=2", "Mesh/Blocks y=16", "Time/End time=0.2",
+     {"Mesh/Blocks x=2",
+      "Mesh/Blocks y=16",
+      "Time/End time=0.2",
       "Mass matrix/Type=consistent"}},
     {"soil_column_large.prm",
      {"Mesh/Blocks y=8", "Time/End time=0.15", "Mass matrix/Type=consistent"}}};
@@ -43,11 +34,9 @@ main(int argc, char **argv)
       for (const auto &s : c.second)
         args.insert(args.end(), {"--set", s});
       std::filesystem::remove_all("run");
-      std::ostringstream captured;
-      auto              *old  = std::cout.rdbuf(captured.rdbuf());
-      const int          code = psmpm::App::run(args, MPI_COMM_WORLD);
-      std::cout.rdbuf(old);
-      const std::string summary = read("run/summary.json");
+      std::string       screen, errors;
+      const int         code    = run_app(args, screen, errors);
+      const std::string summary = read_file("run/summary.json");
       out << c.first << ": exit code " << code << std::endl;
       PSMPM_CHECK(out, code == psmpm::App::unstable);
       PSMPM_CHECK(out,
@@ -56,15 +45,15 @@ main(int argc, char **argv)
       PSMPM_CHECK(out, summary.find("\"reason\":") != std::string::npos);
       PSMPM_CHECK(out, summary.find("\"failed_step\":") != std::string::npos);
       // The series of outputs is complete and holds no NaN.
-      const std::string pvd   = read("run/particles.pvd");
-      const std::string stats = read("run/statistics.txt");
+      const std::string pvd   = read_file("run/particles.pvd");
+      const std::string stats = read_file("run/statistics.txt");
       PSMPM_CHECK(out, pvd.find("</VTKFile>") != std::string::npos);
       PSMPM_CHECK(out, stats.find("nan") == std::string::npos);
       bool pieces = true;
       for (const auto &f : std::filesystem::directory_iterator("run"))
         if (f.path().extension() == ".vtu")
-          pieces =
-            pieces && read(f.path()).find("</VTKFile>") != std::string::npos;
+          pieces = pieces &&
+                   read_file(f.path()).find("</VTKFile>") != std::string::npos;
       PSMPM_CHECK(out, pieces);
     }
 }

@@ -40,9 +40,9 @@ namespace psmpm
      *   on a mesh boundary without Dirichlet condition) are moved to the
      *   diagonal, symmetrically, so row sums (momentum) and definiteness
      *   are kept (Sec. 5.4, symmetrised);
-     * - deactivate: functions whose particle diagonal M_ii is below
-     *   Threshold times their full-support diagonal are set to zero
-     *   (Sec. 5.2 with a relative bound);
+     * - deactivate: the functions of vertices with a particle diagonal
+     *   M_ii below Threshold times its full-support diagonal are set to
+     *   zero (Sec. 5.2 with a relative bound);
      * - extrapolate: the coefficients of vertices with a function below
      *   that bound follow the local linear part of the nearest well
      *   supported vertex (extended B-splines), as linear constraints.
