@@ -87,7 +87,7 @@ namespace psmpm
       /// Append particle @p i's fields to @p buffer.
       void
       pack(const std::size_t i, std::vector<double> &buffer) const;
-      /// Append the particles in @p buffer; their cells are set to @p cell.
+      /// Append the particles in @p buffer; the caller locates their cells.
       void
       unpack(const std::vector<double> &buffer);
 
