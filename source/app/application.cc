@@ -82,7 +82,9 @@ end
         "  --validate            check the input (parameters, mesh, time step), write nothing\n"
         "  --print-parameters    print all entries with defaults and documentation\n"
         "  --help                this text\n"
-        "Exit codes: 0 success, 1 internal error, 2 bad input, 3 unstable run.\n";
+        "Exit codes: 0 success, 1 internal error, 2 bad input; an unstable run\n"
+        "  ends with 3 (non-finite values), 4 (energy growth), 5 (particle left\n"
+        "  the mesh), 6 (non-positive volume) or 7 (solver not converging).\n";
 
       /// The message of an exception without deal.II's source location.
       std::string
@@ -361,8 +363,11 @@ end
               else
                 std::cout << "psmpm: " << summary.to_json();
             }
-          return status == Solver::MPMSolver::Status::completed ? success :
-                                                                  unstable;
+          if (status == Solver::MPMSolver::Status::completed)
+            return success;
+          // Codes 3..7 follow the order of MPMSolver::Failure.
+          return unstable +
+                 std::max(0, static_cast<int>(solver.get_failure()) - 1);
         }
       catch (const std::exception &e)
         {

@@ -271,7 +271,8 @@ namespace psmpm
         time_step_warning =
           "Time/Time step = " + prm_value(time_step) +
           " is above the measured stability limit of this basis and mass "
-          "matrix, about " + prm_value(stability_factor() * bound) +
+          "matrix, about " +
+          prm_value(stability_factor() * bound) +
           " (doc/stability.md); the run may become unstable.";
 
       // Particles of the locally owned cells, with their initial velocity.
@@ -440,8 +441,11 @@ namespace psmpm
           particles.volume[p] *= 1 + dvol;
           particles.density[p] /= 1 + dvol;
           if (!(particles.volume[p] > 0) && failure_reason.empty())
-            failure_reason = "non-positive particle volume (particle " +
-                             std::to_string(particles.id[p]) + ")";
+            {
+              failure        = Failure::non_positive_volume;
+              failure_reason = "non-positive particle volume (particle " +
+                               std::to_string(particles.id[p]) + ")";
+            }
           const Tensor<1, 2> du = dt * v;
           particles.displacement[p] += du;
           particles.position[p] += du;
@@ -464,10 +468,14 @@ namespace psmpm
           if (c == Mesh::CellLocator::invalid)
             {
               if (failure_reason.empty())
-                failure_reason = "particle " + std::to_string(particles.id[p]) +
-                                 " left the mesh at (" +
-                                 prm_value(particles.position[p][0]) + ", " +
-                                 prm_value(particles.position[p][1]) + ")";
+                {
+                  failure        = Failure::left_mesh;
+                  failure_reason = "particle " +
+                                   std::to_string(particles.id[p]) +
+                                   " left the mesh at (" +
+                                   prm_value(particles.position[p][0]) + ", " +
+                                   prm_value(particles.position[p][1]) + ")";
+                }
               continue; // keep its old cell; the run stops after this step
             }
           particles.cell[p] = c;
@@ -511,6 +519,7 @@ namespace psmpm
         }
       catch (const SolverControl::NoConvergence &e)
         {
+          failure        = Failure::solver;
           failure_reason = "mass matrix solver did not converge (" +
                            std::to_string(e.last_step) +
                            " iterations, residual " +
@@ -589,17 +598,27 @@ namespace psmpm
       const bool any_failure =
         Utilities::MPI::max(local_failure ? 1 : 0, comm) > 0;
       if (any_failure)
-        return failure_reason.empty() ? "instability on another MPI rank" :
-                                        failure_reason;
+        {
+          failure = static_cast<Failure>(
+            Utilities::MPI::max(static_cast<int>(failure), comm));
+          return failure_reason.empty() ? "instability on another MPI rank" :
+                                          failure_reason;
+        }
       if (!std::isfinite(e.total()) || !std::isfinite(e.momentum.norm()))
-        return "non-finite energy or momentum";
+        {
+          failure = Failure::non_finite;
+          return "non-finite energy or momentum";
+        }
       energy_scale =
         std::max(energy_scale, e.kinetic + e.strain + std::abs(e.gravity));
       const double growth = e.total() - initial_energy.total();
       if (growth > energy_tolerance * energy_scale && growth > 1e-300)
-        return "total energy grew by " + prm_value(growth) + " (" +
-               prm_value(100 * growth / energy_scale) +
-               " % of the energy scale) without external work";
+        {
+          failure = Failure::energy_growth;
+          return "total energy grew by " + prm_value(growth) + " (" +
+                 prm_value(100 * growth / energy_scale) +
+                 " % of the energy scale) without external work";
+        }
       return "";
     }
 

@@ -53,7 +53,10 @@ main(int argc, char **argv)
         summary.find("\"reason\":") != std::string::npos;
       out << type << ": " << (completed ? "completed" : "unstable")
           << std::endl;
-      PSMPM_CHECK(out, (completed && code == 0) || (reported && code == 3));
+      PSMPM_CHECK(out,
+                  (completed && code == 0) ||
+                    (reported && code >= psmpm::App::unstable &&
+                     code <= psmpm::App::unstable_solver));
       PSMPM_CHECK(out,
                   stats.find("nan") == std::string::npos &&
                     stats.find("inf") == std::string::npos);

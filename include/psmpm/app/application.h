@@ -20,7 +20,13 @@ namespace psmpm
       success   = 0,
       internal  = 1, ///< unexpected failure (a bug)
       bad_input = 2, ///< command line, parameter file or mesh rejected
-      unstable  = 3, ///< the run stopped as unstable (see summary.json)
+      /// The run stopped as unstable (status, reason, step and time in
+      /// summary.json); one code per stability monitor:
+      unstable           = 3, ///< non-finite energy or momentum
+      unstable_energy    = 4, ///< total energy growth
+      unstable_left_mesh = 5, ///< a particle left the mesh
+      unstable_volume    = 6, ///< non-positive particle volume
+      unstable_solver    = 7, ///< mass matrix solver did not converge
     };
 
     /// The scene that runs when no parameter file is given: the small

@@ -47,6 +47,24 @@ namespace psmpm
         unstable
       };
 
+      /// Which stability monitor stopped the run (each has its own exit
+      /// code, see App::ExitCode).
+      enum class Failure : int
+      {
+        none = 0,
+        non_finite,
+        energy_growth,
+        left_mesh,
+        non_positive_volume,
+        solver
+      };
+
+      Failure
+      get_failure() const
+      {
+        return failure;
+      }
+
       MPMSolver(MPI_Comm comm);
       ~MPMSolver();
 
@@ -167,7 +185,7 @@ namespace psmpm
       std::string                             basis_name;
       std::string                             mass_type_name;
       bool                                    check_time_step = true;
-      std::string time_step_warning;
+      std::string                             time_step_warning;
       std::string                             velocity_expression;
       std::string                             velocity_constants;
       Tensor<1, 2>                            gravity;
@@ -220,8 +238,9 @@ namespace psmpm
       double                                     energy_scale = 0;
       Status                                     status = Status::completed;
       std::string                                failure_reason;
-      unsigned int                               failed_step      = 0;
-      double                                     failed_time      = 0;
+      Failure                                    failure     = Failure::none;
+      unsigned int                               failed_step = 0;
+      double                                     failed_time = 0;
       unsigned int                               total_iterations = 0;
     };
   } // namespace Solver
