@@ -5,11 +5,13 @@
 #
 #   contrib/l2_projection_study.sh [build directory] [output .tsv]
 #
-# Needs the targets l2_projection_driver (and p1_reference for the
-# independent P1 check) built in the build directory. Wall time is that of
-# L2Projection::run without VTU output, best of three runs.
+# Builds the targets l2_projection_driver (and p1_reference for the
+# independent P1 check) in the build directory (default: build/, as made by
+# contrib/psmpm.sh). Wall time is that of L2Projection::run without VTU
+# output, best of three runs.
 set -euo pipefail
-build=${1:-/work/build-ps}
+build=${1:-$(dirname "$0")/../build}
+cmake --build "$build" --target l2_projection_driver p1_reference -- -j2 >/dev/null
 table=${2:-$(dirname "$0")/../doc/l2_projection_study.tsv}
 driver=$build/benchmarks/l2_projection_driver
 
