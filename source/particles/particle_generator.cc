@@ -93,14 +93,7 @@ namespace psmpm
     {
       if (mesh.type != Mesh::MeshGenerator::Type::gmsh)
         {
-          const double total =
-            double(mesh.blocks_x) * mesh.blocks_y * per_block_x * per_block_y;
-          AssertThrow(total <= max_particles,
-                      ExcMessage(
-                        "Particles/Per block x, Per block y: " +
-                        std::to_string(total) +
-                        " particles exceed Particles/Maximum number = " +
-                        std::to_string(max_particles) + "."));
+          check_count(mesh);
           const double  hx     = mesh.length / mesh.blocks_x;
           const double  hy     = mesh.height / mesh.blocks_y;
           const double  volume = hx * hy / (per_block_x * per_block_y);

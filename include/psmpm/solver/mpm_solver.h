@@ -208,6 +208,8 @@ namespace psmpm
         double       sum_displacement2 = 0;
         double       sum_velocity2     = 0;
         unsigned int n                 = 0;
+        Errors       latest;
+        unsigned int latest_step = numbers::invalid_unsigned_int;
       } error_history;
       double energy_tolerance = 0.1;
 
