@@ -6,14 +6,19 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <psmpm/base/registry.h>
 
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace psmpm
 {
@@ -23,16 +28,22 @@ namespace psmpm
 
     /**
      * The one interface through which MPM code sees a discrete space on a
-     * 2D simplex triangulation: "the non-zero functions of this cell, their
-     * values and gradients at this point". The degrees of freedom are laid
-     * out by the finite element returned by dof_layout(), so deal.II's
-     * DoFHandler, sparsity patterns, AffineConstraints and parallel index
-     * sets apply unchanged; the local order of the functions of a cell is
-     * the order of cell->get_dof_indices().
+     * simplex triangulation (lines in 1D, triangles in 2D): "the non-zero
+     * functions of this cell, their values and gradients at this point",
+     * plus what the mass strategies and transfers need to know about the
+     * space. The degrees of freedom are laid out by the finite element
+     * returned by dof_layout(), so deal.II's DoFHandler, sparsity
+     * patterns, AffineConstraints and parallel index sets apply unchanged;
+     * the local order of the functions of a cell is the order of
+     * cell->get_dof_indices(). Every DoF belongs to a vertex
+     * (dofs_per_vertex() of them each).
      *
      * Cells are addressed by their active_cell_index(). reinit() must be
      * called after DoFHandler::distribute_dofs() and before evaluation.
+     *
+     * Spaces register in SpaceRegistry<dim>; Basis/Type lists them.
      */
+    template <int dim>
     class Space
     {
     public:
@@ -43,7 +54,7 @@ namespace psmpm
       name() const = 0;
 
       /// Finite element that defines the DoF layout for deal.II.
-      virtual const FiniteElement<2> &
+      virtual const FiniteElement<dim> &
       dof_layout() const = 0;
 
       /// Number of functions that do not vanish on a cell.
@@ -53,9 +64,16 @@ namespace psmpm
         return dof_layout().n_dofs_per_cell();
       }
 
+      /// Number of functions attached to each vertex.
+      unsigned int
+      dofs_per_vertex() const
+      {
+        return dof_layout().n_dofs_per_vertex();
+      }
+
       /// Precompute per-cell data for the mesh of @p dof_handler.
       virtual void
-      reinit(const DoFHandler<2> &dof_handler) = 0;
+      reinit(const DoFHandler<dim> &dof_handler) = 0;
 
       /**
        * Values and gradients of the dofs_per_cell() functions of the cell
@@ -64,9 +82,9 @@ namespace psmpm
        */
       virtual void
       evaluate(const unsigned int cell,
-               const Point<2>    &p,
+               const Point<dim>  &p,
                double            *values,
-               Tensor<1, 2>      *gradients) const = 0;
+               Tensor<1, dim>    *gradients) const = 0;
 
       /**
        * The same for @p n points at once: one virtual call per batch, so
@@ -76,9 +94,9 @@ namespace psmpm
       virtual void
       evaluate(const unsigned int  n,
                const unsigned int *cells,
-               const Point<2>     *points,
+               const Point<dim>   *points,
                double             *values,
-               Tensor<1, 2>       *gradients) const;
+               Tensor<1, dim>     *gradients) const;
 
       /**
        * Add constraints that impose u = g on the boundaries with the given
@@ -88,14 +106,55 @@ namespace psmpm
        */
       virtual void
       make_dirichlet_constraints(
-        const DoFHandler<2>                &dof_handler,
+        const DoFHandler<dim>              &dof_handler,
         const std::set<types::boundary_id> &ids,
-        const Function<2>                  &g,
+        const Function<dim>                &g,
         AffineConstraints<double>          &constraints) const = 0;
+
+      /**
+       * The control point of every DoF, indexed by global DoF index: the
+       * points X_i with sum_i X_i N_i(x) = x, so that the coefficients
+       * f(X_i) of an affine f reproduce f exactly (P1: the vertices;
+       * Powell-Sabin: the corners of the control triangles). Transfers
+       * that carry affine velocity fields (APIC, TPIC) use them.
+       */
+      virtual std::vector<Point<dim>>
+      control_points(const DoFHandler<dim> &dof_handler) const = 0;
+
+      /**
+       * Extended-B-spline extrapolation: the dofs_per_vertex() x
+       * dofs_per_vertex() weights W with c_to = W c_from that continue the
+       * local linear part of vertex @p from's functions to vertex @p to.
+       */
+      virtual FullMatrix<double>
+      extrapolation_weights(const unsigned int from,
+                            const unsigned int to) const = 0;
+
+      /**
+       * Quadrature on cell @p cell (active index) that integrates products
+       * of two functions of the space exactly on the cell, in real
+       * coordinates (L2 projection, reference mass matrices).
+       */
+      virtual Quadrature<dim>
+      cell_quadrature(const DoFHandler<dim> &dof_handler,
+                      const unsigned int     cell) const = 0;
+
+      /**
+       * Largest stable time step over h_min / c_p of the explicit scheme
+       * with this space, with a lumped (@p lumped = true) or a consistent
+       * mass matrix (measured, see doc/stability.md; h_min is the smallest
+       * triangle height, in 1D the smallest element length).
+       */
+      virtual double
+      stability_factor(const bool lumped) const = 0;
     };
 
-    /// Create the space named @p name ("linear" or "powell-sabin").
-    std::unique_ptr<Space>
+    template <int dim>
+    using SpaceRegistry = Registry<Space<dim>>;
+
+    /// Create the space named @p name (Basis/Type).
+    template <int dim>
+    std::unique_ptr<Space<dim>>
     create_space(const std::string &name);
   } // namespace Basis
 } // namespace psmpm

@@ -8,7 +8,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,44 +24,32 @@ namespace psmpm
      * memory. (deal.II's ParticleHandler sorts particles into triangles
      * wrongly in 9.4.1 and its ghost exchange is broken on simplices, see
      * doc/design.md; ownership here follows the cell's subdomain.)
-     * Every particle always knows its cell (active cell index).
+     *
+     * Two parts: the kinematics every MPM needs (position, velocity,
+     * displacement, mass, volume, Cauchy stress, the cell), and a block of
+     * n_state() scalars per particle that belongs to the material model
+     * (its names come from Material::state_names()). Every particle always
+     * knows its cell (active cell index).
      */
+    template <int dim>
     class ParticleSet
     {
     public:
-      /// Scalar layout of one particle for MPI transfer and output; the
-      /// fields are addressed by name, never by bare offsets.
-      enum class Field : unsigned int
-      {
-        id,
-        mass,
-        volume,
-        density,
-        position_x,
-        position_y,
-        initial_position_x,
-        initial_position_y,
-        displacement_x,
-        displacement_y,
-        velocity_x,
-        velocity_y,
-        traction_x,
-        traction_y,
-        stress_xx,
-        stress_yy,
-        stress_xy,
-        stress_zz,
-        strain_xx,
-        strain_yy,
-        strain_xy,
-        n_fields
-      };
-      static constexpr unsigned int n_fields =
-        static_cast<unsigned int>(Field::n_fields);
+      /// Name the material's state scalars (before particles are added).
+      void
+      set_state_names(const std::vector<std::string> &names);
 
-      /// Name of a field for output.
-      static std::string
-      field_name(const Field f);
+      const std::vector<std::string> &
+      get_state_names() const
+      {
+        return state_names;
+      }
+
+      unsigned int
+      n_state() const
+      {
+        return state_names.size();
+      }
 
       std::size_t
       size() const
@@ -70,21 +57,32 @@ namespace psmpm
         return mass.size();
       }
 
-      /// Append one particle at @p x in @p cell with all other fields zero.
+      /// Append one particle at @p x in @p cell with zero velocity,
+      /// displacement, stress and state.
       void
       add(const std::uint64_t id,
           const unsigned int  cell,
-          const Point<2>     &x,
+          const Point<dim>   &x,
           const double        volume,
           const double        density);
 
-      /// The value of field @p f of particle @p i.
-      double
-      get(const std::size_t i, const Field f) const;
-      void
-      set(const std::size_t i, const Field f, const double value);
+      /// The state block of particle @p i (n_state() values).
+      double *
+      state_of(const std::size_t i)
+      {
+        return state.data() + i * n_state();
+      }
+      const double *
+      state_of(const std::size_t i) const
+      {
+        return state.data() + i * n_state();
+      }
 
-      /// Append particle @p i's fields to @p buffer.
+      /// Number of doubles pack() appends per particle.
+      unsigned int
+      n_packed() const;
+
+      /// Append particle @p i (all arrays but the cell) to @p buffer.
       void
       pack(const std::size_t i, std::vector<double> &buffer) const;
       /// Append the particles in @p buffer; the caller locates their cells.
@@ -99,24 +97,22 @@ namespace psmpm
       void
       sort_by_cell(const unsigned int n_cells);
 
-      std::vector<std::uint64_t> id;
-      std::vector<unsigned int>  cell;
-      std::vector<double>        mass;
-      std::vector<double>        volume;
-      std::vector<double>        density;
-      std::vector<Point<2>>      position;
-      std::vector<Point<2>>      initial_position;
-      std::vector<Tensor<1, 2>>  displacement;
-      std::vector<Tensor<1, 2>>  velocity;
-      std::vector<Tensor<1, 2>>  traction; ///< force of boundary particles
-      std::vector<SymmetricTensor<2, 2>> stress; ///< in-plane Cauchy stress
-      std::vector<double> stress_zz; ///< out-of-plane (plane strain)
-      std::vector<SymmetricTensor<2, 2>> strain;
+      // Kinematics.
+      std::vector<std::uint64_t>           id;
+      std::vector<unsigned int>            cell;
+      std::vector<double>                  mass;
+      std::vector<double>                  volume;
+      std::vector<double>                  density;
+      std::vector<Point<dim>>              position;
+      std::vector<Point<dim>>              initial_position;
+      std::vector<Tensor<1, dim>>          displacement;
+      std::vector<Tensor<1, dim>>          velocity;
+      std::vector<SymmetricTensor<2, dim>> stress; ///< Cauchy stress
+      /// Material state, n_state() per particle, particle-major.
+      std::vector<double> state;
 
     private:
-      template <typename F>
-      void
-      for_each_array(F &&f);
+      std::vector<std::string> state_names;
     };
   } // namespace Particles
 } // namespace psmpm

@@ -1,0 +1,149 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_base_registry_h
+#define psmpm_base_registry_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace psmpm
+{
+  using namespace dealii;
+
+  /**
+   * Name -> factory table of the variants of one concept (bases, mass
+   * strategies, materials, references, transfer schemes). Every variant
+   * registers itself from its own source file with a static Registration
+   * object, so that adding a variant is one new file plus one registration
+   * line; every Patterns::Selection of a variant name is built from here,
+   * so the list the user sees is the list that exists. (ASPECT's plugin
+   * system is the model; this is a smaller, header-only take on it.)
+   *
+   * @tparam Base the interface; @tparam Args the arguments of the factory.
+   */
+  template <typename Base, typename... Args>
+  class Registry
+  {
+  public:
+    using Factory = std::function<std::unique_ptr<Base>(Args...)>;
+
+    struct Entry
+    {
+      std::string name;
+      std::string description;
+      Factory     create;
+      /// Declares the variant's own entries (may be empty).
+      std::function<void(ParameterHandler &)> declare_parameters;
+    };
+
+    /// The one registry of this kind (created on first use, so
+    /// registrations from static objects of any translation unit or
+    /// library are safe).
+    static Registry &
+    instance()
+    {
+      static Registry registry;
+      return registry;
+    }
+
+    void
+    add(const Entry &entry)
+    {
+      AssertThrow(entries.find(entry.name) == entries.end(),
+                  ExcMessage("psmpm: variant '" + entry.name +
+                             "' is registered twice."));
+      entries[entry.name] = entry;
+    }
+
+    bool
+    has(const std::string &name) const
+    {
+      return entries.find(name) != entries.end();
+    }
+
+    /// "a|b|c" for Patterns::Selection.
+    std::string
+    selection() const
+    {
+      return join("|");
+    }
+
+    /// "a, b, c" for messages.
+    std::string
+    names() const
+    {
+      return join(", ");
+    }
+
+    /// One line per variant: "name: description".
+    std::string
+    documentation() const
+    {
+      std::string s;
+      for (const auto &e : entries)
+        s += (s.empty() ? "" : "; ") + e.first + ": " + e.second.description;
+      return s;
+    }
+
+    /// Declare the entries of every variant.
+    void
+    declare_parameters(ParameterHandler &prm) const
+    {
+      for (const auto &e : entries)
+        if (e.second.declare_parameters)
+          e.second.declare_parameters(prm);
+    }
+
+    /**
+     * Create variant @p name; @p entry ("Subsection/Entry") names the
+     * parameter in the error for an unknown name.
+     */
+    std::unique_ptr<Base>
+    create(const std::string &name,
+           const std::string &entry,
+           Args... args) const
+    {
+      const auto it = entries.find(name);
+      AssertThrow(it != entries.end(),
+                  ExcMessage(entry + " = " + name + ": unknown (known: " +
+                             names() + ")."));
+      return it->second.create(args...);
+    }
+
+  private:
+    std::string
+    join(const std::string &separator) const
+    {
+      std::string s;
+      for (const auto &e : entries)
+        s += (s.empty() ? "" : separator) + e.first;
+      return s;
+    }
+
+    std::map<std::string, Entry> entries;
+  };
+
+  /**
+   * Registers a variant when constructed: one static object per variant,
+   * in the variant's source file, e.g.
+   * @code
+   * static Registration<MaterialRegistry<2>> reg({"my law", "doc", f, d});
+   * @endcode
+   */
+  template <typename RegistryType>
+  struct Registration
+  {
+    explicit Registration(const typename RegistryType::Entry &entry)
+    {
+      RegistryType::instance().add(entry);
+    }
+  };
+} // namespace psmpm
+
+#endif

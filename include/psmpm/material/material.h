@@ -1,0 +1,146 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_material_material_h
+#define psmpm_material_material_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <psmpm/base/registry.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace psmpm
+{
+  namespace Material
+  {
+    using namespace dealii;
+
+    /**
+     * A constitutive model as MPM sees it (subsection "Material"). The
+     * model owns a block of named scalars per particle (its state: strains,
+     * deformation gradient, out-of-plane stress, ...), updates the Cauchy
+     * stress and that state from the velocity gradient increment, reports
+     * the stored energy density and the wave speed for the time step.
+     *
+     * 2D is plane strain, 1D is uniaxial strain (the lateral strains are
+     * zero), so that in both the small-strain wave speed is the p-wave
+     * speed sqrt((K + 4G/3) / rho); with Poisson's ratio 0 that is
+     * sqrt(E / rho), the 1D bar of the thesis and the book chapter.
+     *
+     * All per-particle functions work on batches: one virtual call per
+     * batch, never per particle, so that models can be plug-ins without
+     * a cost in the particle loops.
+     *
+     * Models register in MaterialRegistry<dim> (one line in their own
+     * source file); Material/Model lists what is registered.
+     */
+    template <int dim>
+    class Material
+    {
+    public:
+      virtual ~Material() = default;
+
+      /// Material/Model and the constants every model has, then the
+      /// entries of each registered model (inside subsection "Material").
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /// Create the model named in Material/Model and parse it (the
+      /// subsection is entered here).
+      static std::unique_ptr<Material<dim>>
+      create(ParameterHandler &prm);
+
+      /// Read the common constants (subsection "Material" entered);
+      /// models with entries of their own override it and call this first.
+      virtual void
+      parse_parameters(ParameterHandler &prm);
+
+      /// The name under which the model is registered.
+      virtual std::string
+      name() const = 0;
+
+      /// Names of the per-particle state scalars (output, checkpoints).
+      virtual std::vector<std::string>
+      state_names() const = 0;
+
+      unsigned int
+      n_state() const
+      {
+        return state_names().size();
+      }
+
+      /// Initial state of @p n particles (n * n_state() values, default
+      /// zero; models with a deformation gradient set the identity).
+      virtual void
+      initialize(const unsigned int n, double *state) const;
+
+      /**
+       * Update @p n particles: @p dL[i] = dt grad v at particle i (L_ij =
+       * dv_i/dx_j); @p stress[i] and the i-th state block
+       * (state + i * n_state()) are updated in place and @p volume_ratio[i]
+       * receives V_new / V_old.
+       */
+      virtual void
+      update(const unsigned int             n,
+             const Tensor<2, dim>          *dL,
+             SymmetricTensor<2, dim>       *stress,
+             double                        *state,
+             double                        *volume_ratio) const = 0;
+
+      /// Stored energy per unit current volume of @p n particles.
+      virtual void
+      energy_density(const unsigned int             n,
+                     const SymmetricTensor<2, dim> *stress,
+                     const double                  *state,
+                     double                        *energy) const = 0;
+
+      /// Largest wave speed of the current state of one particle (time
+      /// step control); the default is the small-strain p-wave speed.
+      virtual double
+      wave_speed(const SymmetricTensor<2, dim> &stress,
+                 const double                  *state) const;
+
+      double
+      bulk_modulus() const
+      {
+        return youngs_modulus / (3 * (1 - 2 * poisson_ratio));
+      }
+      double
+      shear_modulus() const
+      {
+        return youngs_modulus / (2 * (1 + poisson_ratio));
+      }
+      double
+      lame_lambda() const
+      {
+        return bulk_modulus() - 2. / 3 * shear_modulus();
+      }
+      /// p-wave (constrained) modulus K + 4G/3 = lambda + 2G.
+      double
+      p_wave_modulus() const
+      {
+        return bulk_modulus() + 4. / 3 * shear_modulus();
+      }
+      double
+      p_wave_speed() const
+      {
+        return std::sqrt(p_wave_modulus() / density);
+      }
+
+      double density        = 1;
+      double youngs_modulus = 100;
+      double poisson_ratio  = 0;
+    };
+
+    template <int dim>
+    using MaterialRegistry = Registry<Material<dim>>;
+  } // namespace Material
+} // namespace psmpm
+
+#endif
