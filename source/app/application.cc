@@ -8,7 +8,7 @@
 #include <psmpm/app/application.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/solver/l2_projection.h>
-#include <psmpm/solver/mpm_solver.h>
+#include <psmpm/simulator/simulator.h>
 
 #include <filesystem>
 #include <fstream>
@@ -234,7 +234,14 @@ end
                         Patterns::Selection("mpm|l2 projection"),
                         "mpm: material point simulation; l2 projection: "
                         "project Projection/Function onto the basis.");
-      Solver::MPMSolver::declare_parameters(prm);
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(1, 2),
+                        "1: a bar along x on [0, Length] (Mesh/Blocks x "
+                        "elements, P1); 2: triangles in the plane.");
+      prm.leave_subsection();
+      Simulator::Simulator<2>::declare_parameters(prm);
       Solver::L2Projection::declare_parameters(prm);
     }
 
@@ -248,8 +255,8 @@ end
       CommandLine      cl;
       ParameterHandler prm;
       declare_parameters(prm);
-      Solver::MPMSolver    solver(comm);
-      Mesh::MeshGenerator  mesh;
+      std::unique_ptr<Simulator::SimulatorBase> solver;
+      Mesh::MeshGenerator<2> mesh;
       Solver::L2Projection projection;
       std::string          problem, basis;
       std::string          where = "the command line";
@@ -285,8 +292,12 @@ end
           problem = prm.get("Problem");
           if (problem == "mpm")
             {
-              solver.parse_parameters(prm);
-              solver.setup();
+              prm.enter_subsection("Geometry");
+              const unsigned int dimension = prm.get_integer("Dimension");
+              prm.leave_subsection();
+              solver = Simulator::create_simulator(dimension, comm);
+              solver->parse_parameters(prm);
+              solver->setup();
             }
           else
             {
@@ -332,13 +343,14 @@ end
           prm.enter_subsection("Output");
           const bool test_output = prm.get_bool("Test output");
           prm.leave_subsection();
-          solver.quiet = test_output;
+          if (solver)
+            solver->quiet = test_output;
           Postprocess::Summary summary;
-          auto                 status = Solver::MPMSolver::Status::completed;
+          auto                 status = Simulator::Status::completed;
           if (problem == "mpm")
             {
-              status = solver.run(dir);
-              solver.fill_summary(summary);
+              status = solver->run(dir);
+              solver->fill_summary(summary);
             }
           else
             {
@@ -354,7 +366,7 @@ end
               if (test_output)
                 {
                   std::cout << "status = "
-                            << (status == Solver::MPMSolver::Status::completed ?
+                            << (status == Simulator::Status::completed ?
                                   "completed" :
                                   "unstable")
                             << "\n";
@@ -363,11 +375,9 @@ end
               else
                 std::cout << "psmpm: " << summary.to_json();
             }
-          if (status == Solver::MPMSolver::Status::completed)
+          if (status == Simulator::Status::completed)
             return success;
-          // Codes 3..7 follow the order of MPMSolver::Failure.
-          return unstable +
-                 std::max(0, static_cast<int>(solver.get_failure()) - 1);
+          return Simulator::failure_info(solver->get_failure()).exit_code;
         }
       catch (const std::exception &e)
         {

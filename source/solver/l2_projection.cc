@@ -189,7 +189,7 @@ namespace psmpm
     }
 
     void
-    L2Projection::run(const Mesh::MeshGenerator &mesh,
+    L2Projection::run(const Mesh::MeshGenerator<2> &mesh,
                       const std::string         &basis_name,
                       const std::string         &output_directory,
                       Postprocess::Summary      &summary,
@@ -198,7 +198,7 @@ namespace psmpm
       Triangulation<2> tria;
       mesh.create(tria);
 
-      auto          space = Basis::create_space(basis_name);
+      auto          space = Basis::create_space<2>(basis_name);
       DoFHandler<2> dof_handler(tria);
       dof_handler.distribute_dofs(space->dof_layout());
       space->reinit(dof_handler);

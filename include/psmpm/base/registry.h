@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 namespace psmpm
 {
@@ -142,6 +143,50 @@ namespace psmpm
     explicit Registration(const typename RegistryType::Entry &entry)
     {
       RegistryType::instance().add(entry);
+    }
+  };
+
+  /**
+   * Registers the dim = 1 and dim = 2 instances of a dimension-templated
+   * variant in RegistryOf<1> and RegistryOf<2>: the one line a variant
+   * file needs, e.g.
+   * @code
+   * RegisterForDims<MassStrategyRegistry, Lumped> reg("lumped", "doc");
+   * @endcode
+   * The variant is constructed from the factory's arguments if it can
+   * be, else by default.
+   */
+  template <template <int> class RegistryOf, template <int> class Variant>
+  struct RegisterForDims
+  {
+    RegisterForDims(
+      const std::string                             &name,
+      const std::string                             &description,
+      const std::function<void(ParameterHandler &)> &declare = nullptr)
+    {
+      add<1>(name, description, declare);
+      add<2>(name, description, declare);
+    }
+
+  private:
+    template <int dim>
+    static void
+    add(const std::string                             &name,
+        const std::string                             &description,
+        const std::function<void(ParameterHandler &)> &declare)
+    {
+      using Entry = typename RegistryOf<dim>::Entry;
+      Entry e;
+      e.name               = name;
+      e.description        = description;
+      e.declare_parameters = declare;
+      e.create             = [](auto &&...args) {
+        if constexpr (std::is_constructible_v<Variant<dim>, decltype(args)...>)
+          return std::make_unique<Variant<dim>>(args...);
+        else
+          return std::make_unique<Variant<dim>>();
+      };
+      RegistryOf<dim>::instance().add(e);
     }
   };
 } // namespace psmpm

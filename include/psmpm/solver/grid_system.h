@@ -13,8 +13,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <psmpm/basis/space.h>
+#include <psmpm/solver/mass_strategy.h>
 
 #include <array>
+#include <memory>
 #include <set>
 #include <vector>
 
@@ -26,47 +28,27 @@ namespace psmpm
 
     /**
      * The grid side of MPM: the mass matrix and the solution of M x = b for
-     * the two velocity components with their own Dirichlet constraints.
-     * Particle loops accumulate into plain per-cell arrays (no searching,
-     * no Trilinos calls per particle); this class turns those into
-     * distributed systems and returns the solution in a local array over
-     * the locally relevant DoFs (index l of relevant_dofs()).
-     *
-     * Mass matrix strategies (thesis chapter 5 and beyond):
-     * - consistent: the particle-quadrature matrix, CG;
-     * - lumped: row sums, no sparse matrix is built;
-     * - partially lumped: couplings of the functions of vertices on the
-     *   material's free boundary (touching a filled and an empty cell, or
-     *   on a mesh boundary without Dirichlet condition) are moved to the
-     *   diagonal, symmetrically, so row sums (momentum) and definiteness
-     *   are kept (Sec. 5.4, symmetrised);
-     * - deactivate: the functions of vertices with a particle diagonal
-     *   M_ii below Threshold times its full-support diagonal are set to
-     *   zero (Sec. 5.2 with a relative bound);
-     * - extrapolate: the coefficients of vertices with a function below
-     *   that bound follow the local linear part of the nearest well
-     *   supported vertex (extended B-splines), as linear constraints.
+     * the dim velocity components with their own Dirichlet constraints.
+     * Particle loops accumulate into plain per-cell arrays (CellArrays: no
+     * searching, no Trilinos calls per particle); this class turns those
+     * into distributed systems and returns the solution in a local array
+     * over the locally relevant DoFs (index l of relevant_dofs()). How the
+     * mass matrix is formed is the MassStrategy's business.
      */
+    template <int dim>
     class GridSystem
     {
     public:
-      enum class MassType
-      {
-        consistent,
-        lumped,
-        partially_lumped,
-        deactivate,
-        extrapolate
-      };
-
       struct Parameters
       {
+        /// Subsection "Mass matrix": Type (from MassStrategyRegistry),
+        /// solver entries and the strategies' shared Threshold.
         static void
         declare_parameters(ParameterHandler &prm);
         void
         parse_parameters(ParameterHandler &prm);
 
-        MassType     type           = MassType::partially_lumped;
+        std::string  type           = "partially lumped";
         double       tolerance      = 1e-12;
         unsigned int max_iterations = 1000;
         std::string  preconditioner = "jacobi";
@@ -85,20 +67,40 @@ namespace psmpm
           0; ///< lumped, deactivated or extrapolated
       };
 
-      GridSystem(const Parameters    &parameters,
-                 const Basis::Space  &space,
-                 const DoFHandler<2> &dof_handler,
-                 MPI_Comm             comm);
+      /// Per owned cell: consistent mass dofs_per_cell^2 (row-major; only
+      /// if the strategy uses a matrix), lumped row sums, right-hand sides
+      /// (index c * dofs_per_cell + k). The transfer scheme fills them.
+      struct CellArrays
+      {
+        std::vector<double>         mass;
+        std::vector<double>         lumped;
+        std::vector<Tensor<1, dim>> rhs;
+      };
+
+      /// The vertex view of the DoFs, for vertex-wise strategies.
+      struct VertexTables
+      {
+        unsigned int dofs_per_vertex = 1;
+        std::vector<std::vector<unsigned int>> dofs;  ///< local relevant
+        std::vector<std::vector<unsigned int>> cells; ///< active indices
+        std::vector<std::vector<unsigned int>> neighbors;
+        std::vector<bool>                      on_free_boundary;
+      };
+
+      GridSystem(const Parameters       &parameters,
+                 const Basis::Space<dim> &space,
+                 const DoFHandler<dim>  &dof_handler,
+                 MPI_Comm                comm);
 
       /**
        * Index sets, constraints (component d fixed on fixed[d]) and, for
-       * matrix types, sparsity and matrices. @p density is the material
-       * density for the full-support diagonal of the relative thresholds;
-       * boundaries not in @p fixed are free surfaces for partial lumping.
+       * matrix strategies, sparsity and matrices. @p density is the
+       * material density for the full-support diagonal of the relative
+       * thresholds; boundaries not in @p fixed are free surfaces.
        */
       void
-      reinit(const std::array<std::set<types::boundary_id>, 2> &fixed,
-             const double                                       density);
+      reinit(const std::array<std::set<types::boundary_id>, dim> &fixed,
+             const double                                         density);
 
       /// Zero the per-cell accumulators of the owned cells.
       void
@@ -110,15 +112,59 @@ namespace psmpm
       void
       assemble_mass();
 
-      /// Solve M x_d = b_d for d = 0, 1 with b from cell_rhs; result in
-      /// @p solution (local relevant numbering).
+      /// Solve M x_d = b_d for every component d with b from the cell
+      /// right-hand sides; result in @p solution (local relevant numbering).
       void
-      solve(std::vector<Tensor<1, 2>> &solution);
+      solve(std::vector<Tensor<1, dim>> &solution);
+
+      const MassStrategy<dim> &
+      strategy() const
+      {
+        return *mass_strategy;
+      }
+      bool
+      uses_matrix() const
+      {
+        return mass_strategy->uses_matrix();
+      }
+
+      CellArrays &
+      cell_arrays()
+      {
+        return cells;
+      }
+      const CellArrays &
+      cell_arrays() const
+      {
+        return cells;
+      }
+      /// Local relevant index of DoF k of cell c at [c * dofs_per_cell + k]
+      /// (owned cells only).
+      const std::vector<unsigned int> &
+      cell_dofs() const
+      {
+        return cell_dof_indices;
+      }
+      const std::vector<unsigned int> &
+      owned_cells() const
+      {
+        return owned_cell_indices;
+      }
+      const VertexTables &
+      vertex_tables() const
+      {
+        return vertices;
+      }
 
       const SolveStatistics &
       statistics() const
       {
         return stats;
+      }
+      void
+      set_n_treated_dofs(const unsigned int n)
+      {
+        stats.n_treated_dofs = n;
       }
 
       const IndexSet &
@@ -131,10 +177,29 @@ namespace psmpm
       {
         return relevant;
       }
+      /// Global index of local relevant index l.
+      const std::vector<types::global_dof_index> &
+      relevant_global_indices() const
+      {
+        return relevant_global;
+      }
+      const AffineConstraints<double> &
+      dirichlet_constraints(const unsigned int d) const
+      {
+        return dirichlet[d];
+      }
       const AffineConstraints<double> &
       constraints(const unsigned int d) const
       {
         return active_constraints[d];
+      }
+      /// Replace the step's constraints of component d (closed, already
+      /// merged with the Dirichlet ones).
+      void
+      set_constraints(const unsigned int d, AffineConstraints<double> &c)
+      {
+        active_constraints[d].clear();
+        active_constraints[d].copy_from(c);
       }
       /// Lumped mass in local relevant numbering (after assemble_mass).
       const std::vector<double> &
@@ -148,28 +213,27 @@ namespace psmpm
       {
         return local_full_diagonal;
       }
+      const Basis::Space<dim> &
+      get_space() const
+      {
+        return space;
+      }
+      const DoFHandler<dim> &
+      get_dof_handler() const
+      {
+        return dof_handler;
+      }
+      MPI_Comm
+      get_communicator() const
+      {
+        return comm;
+      }
 
       const Parameters   parameters;
       const unsigned int dofs_per_cell;
       const unsigned int n_cells;
 
-      /// Local relevant index of DoF k of cell c at [c * dofs_per_cell + k]
-      /// (owned cells only).
-      std::vector<unsigned int> cell_dofs;
-      /// Per owned cell: consistent mass dofs_per_cell^2 (row-major; only
-      /// for matrix types), lumped row sums and right-hand sides.
-      std::vector<double>       cell_mass;
-      std::vector<double>       cell_lumped;
-      std::vector<Tensor<1, 2>> cell_rhs;
-      /// Indices of the locally owned cells.
-      std::vector<unsigned int> owned_cells;
-
     private:
-      bool
-      uses_matrix() const
-      {
-        return parameters.type != MassType::lumped;
-      }
       void
       scatter(const double                  *cell_values,
               const unsigned int             stride,
@@ -182,44 +246,40 @@ namespace psmpm
       compute_full_support_diagonal(const double density);
       void
       build_vertex_tables(
-        const std::array<std::set<types::boundary_id>, 2> &fixed);
+        const std::array<std::set<types::boundary_id>, dim> &fixed);
       void
       build_sparsity();
-      std::vector<bool>
-      poorly_supported_vertices(const std::vector<double> &diagonal) const;
+      std::vector<double>
+      particle_diagonal();
       void
-      lump_free_boundary_couplings();
-      bool
-      update_step_constraints(const std::vector<bool> &outer_vertices);
+      assemble_matrix(const unsigned int d);
       unsigned int
       solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
 
-      const Basis::Space                                 &space;
-      const DoFHandler<2>                                &dof_handler;
-      MPI_Comm                                            comm;
-      IndexSet                                            owned;
-      IndexSet                                            relevant;
-      std::vector<types::global_dof_index>                relevant_global;
-      std::array<AffineConstraints<double>, 2>            dirichlet;
-      std::array<AffineConstraints<double>, 2>            active_constraints;
-      std::array<TrilinosWrappers::SparseMatrix, 2>       matrix;
-      std::array<TrilinosWrappers::PreconditionJacobi, 2> jacobi;
-      std::array<TrilinosWrappers::PreconditionAMG, 2>    amg;
-      TrilinosWrappers::MPI::Vector                       lumped; // owned
+      std::unique_ptr<MassStrategy<dim>>                    mass_strategy;
+      const Basis::Space<dim>                              &space;
+      const DoFHandler<dim>                                &dof_handler;
+      MPI_Comm                                              comm;
+      IndexSet                                              owned;
+      IndexSet                                              relevant;
+      std::vector<types::global_dof_index>                  relevant_global;
+      std::vector<unsigned int>                             cell_dof_indices;
+      std::vector<unsigned int>                             owned_cell_indices;
+      CellArrays                                            cells;
+      VertexTables                                          vertices;
+      std::array<AffineConstraints<double>, dim>            dirichlet;
+      std::array<AffineConstraints<double>, dim>            active_constraints;
+      std::array<TrilinosWrappers::SparseMatrix, dim>       matrix;
+      std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
+      std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
+      TrilinosWrappers::MPI::Vector                         lumped; // owned
       TrilinosWrappers::MPI::Vector writable; // owned + writable ghosts
-      TrilinosWrappers::MPI::Vector ghosted;  // owned + readable ghosts
-      std::vector<double>           local_lumped;
-      std::vector<double>           local_full_diagonal;
-      std::vector<double>           scratch;
-      SolveStatistics               stats;
-
-      // Vertex view of the DoFs (for vertex-wise strategies).
-      unsigned int                           dofs_per_vertex = 1;
-      std::vector<std::vector<unsigned int>> vertex_dofs;  // local relevant
-      std::vector<std::vector<unsigned int>> vertex_cells; // active indices
-      std::vector<std::vector<unsigned int>> vertex_neighbors;
-      std::vector<bool>                      vertex_on_free_boundary;
-      std::vector<bool>                      previous_outer;
+      /// Scratch of const functions (no state between calls).
+      mutable TrilinosWrappers::MPI::Vector ghosted; // owned + read ghosts
+      mutable std::vector<double>           scratch;
+      std::vector<double>                   local_lumped;
+      std::vector<double>                   local_full_diagonal;
+      SolveStatistics                       stats;
     };
   } // namespace Solver
 } // namespace psmpm

@@ -53,7 +53,7 @@ namespace psmpm
        * @p output_directory.
        */
       void
-      run(const Mesh::MeshGenerator &mesh,
+      run(const Mesh::MeshGenerator<2> &mesh,
           const std::string         &basis_name,
           const std::string         &output_directory,
           Postprocess::Summary      &summary,

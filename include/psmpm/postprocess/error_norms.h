@@ -1,0 +1,64 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_postprocess_error_norms_h
+#define psmpm_postprocess_error_norms_h
+
+#include <deal.II/base/table_handler.h>
+
+#include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/summary.h>
+#include <psmpm/simulator/state.h>
+
+namespace psmpm
+{
+  namespace Postprocess
+  {
+    /// Global error norms (thesis eq. 4.4) against a reference.
+    struct Errors
+    {
+      double displacement = 0, velocity = 0, stress = 0;
+    };
+
+    /**
+     * Error norms against the reference every Output/Error interval steps
+     * and at the last step (columns displacement_L2, velocity_L2,
+     * stress_L2; "-" where not computed), with their maximum and RMS over
+     * time for summary.json.
+     */
+    template <int dim>
+    class ErrorNorms
+    {
+    public:
+      ErrorNorms(const Reference<dim> &reference, const unsigned int interval);
+
+      static Errors
+      compute(const Simulator::State<dim> &state,
+              const Reference<dim>        &reference);
+
+      void
+      execute(const Simulator::State<dim> &state,
+              const bool                   last,
+              TableHandler                &statistics);
+
+      /// The errors now: the last computed ones if they are of this step.
+      Errors
+      current(const Simulator::State<dim> &state) const;
+
+      void
+      fill_summary(const Simulator::State<dim> &state, Summary &summary) const;
+
+    private:
+      const Reference<dim> &reference;
+      const unsigned int    interval;
+      double                max_displacement  = 0;
+      double                sum_displacement2 = 0;
+      double                sum_velocity2     = 0;
+      unsigned int          n                 = 0;
+      Errors                latest;
+      unsigned int          latest_step = numbers::invalid_unsigned_int;
+    };
+  } // namespace Postprocess
+} // namespace psmpm
+
+#endif

@@ -1,0 +1,58 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_postprocess_tracked_particle_h
+#define psmpm_postprocess_tracked_particle_h
+
+#include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/summary.h>
+#include <psmpm/simulator/state.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace psmpm
+{
+  namespace Postprocess
+  {
+    /**
+     * The history of the particle that starts nearest to Output/Tracked
+     * point, with the reference's, along the reference's axis:
+     * tracked_particle.txt and the RMS of the differences over time (a
+     * grid-crossing noise measure) in summary.json.
+     */
+    template <int dim>
+    class TrackedParticle
+    {
+    public:
+      TrackedParticle(const Point<dim>     &point,
+                      const Reference<dim> &reference);
+
+      /// Find the particle (smallest id among equally near ones).
+      void
+      initialize(const Simulator::State<dim> &state);
+
+      void
+      execute(const Simulator::State<dim> &state);
+
+      /// tracked_particle.txt in @p directory (rank 0).
+      void
+      write(const std::string &directory, MPI_Comm comm) const;
+
+      void
+      fill_summary(Summary &summary) const;
+
+    private:
+      const Point<dim>                   point;
+      const Reference<dim>              &reference;
+      const unsigned int                 axis;
+      std::uint64_t                      id = 0;
+      std::vector<std::array<double, 5>> history;
+      double                             velocity2     = 0;
+      double                             displacement2 = 0;
+    };
+  } // namespace Postprocess
+} // namespace psmpm
+
+#endif

@@ -1,0 +1,195 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_simulator_simulator_h
+#define psmpm_simulator_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/table_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <psmpm/mesh/mesh_generator.h>
+#include <psmpm/particles/particle_generator.h>
+#include <psmpm/postprocess/energies.h>
+#include <psmpm/postprocess/error_norms.h>
+#include <psmpm/postprocess/output_writer.h>
+#include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/summary.h>
+#include <psmpm/postprocess/tracked_particle.h>
+#include <psmpm/simulator/stability_monitor.h>
+#include <psmpm/simulator/state.h>
+#include <psmpm/simulator/time_step_control.h>
+#include <psmpm/simulator/transfer_scheme.h>
+
+#include <memory>
+#include <string>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    using namespace dealii;
+
+    /// How a run ended; unstable runs carry the reason.
+    enum class Status
+    {
+      completed,
+      unstable
+    };
+
+    /// What the application needs of a run, whatever its dimension.
+    class SimulatorBase
+    {
+    public:
+      virtual ~SimulatorBase() = default;
+      virtual void
+      parse_parameters(ParameterHandler &prm) = 0;
+      virtual void
+      setup() = 0;
+      virtual Status
+      run(const std::string &output_directory) = 0;
+      virtual void
+      fill_summary(Postprocess::Summary &summary) const = 0;
+      virtual Failure
+      get_failure() const = 0;
+
+      /// Quiet mode: no screen output (tests).
+      bool quiet = false;
+    };
+
+    /**
+     * An MPM run in @p dim dimensions: reads the scene, builds the State
+     * and the components (space, mass strategy, material, transfer
+     * scheme, time step control, stability monitor, reference and
+     * postprocessors, each from its registry or subsection) and runs the
+     * time loop.
+     */
+    template <int dim>
+    class Simulator : public SimulatorBase
+    {
+    public:
+      explicit Simulator(MPI_Comm comm);
+
+      /// Every entry of an MPM scene (the same for all dimensions).
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /// Parse and check everything; throws ExcMessage naming the entry.
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      /// Mesh, DoFs, particles, time step; throws on invalid input. No
+      /// file is written.
+      void
+      setup() override;
+
+      /// Time loop; writes output into @p output_directory (which exists).
+      Status
+      run(const std::string &output_directory) override;
+
+      /// One time step (public for tests): transfer, locate, advance time.
+      void
+      do_time_step(const double dt);
+
+      /// Status, errors, counts and timers (the caller adds wall time).
+      void
+      fill_summary(Postprocess::Summary &summary) const override;
+
+      Postprocess::Errors
+      compute_errors() const;
+      Postprocess::Energies<dim>
+      compute_energies() const;
+
+      Failure
+      get_failure() const override
+      {
+        return monitor.get_failure();
+      }
+      const State<dim> &
+      get_state() const
+      {
+        return state;
+      }
+      const Particles::ParticleSet<dim> &
+      get_particles() const
+      {
+        return state.particles;
+      }
+      const Mesh::CellLocator<dim> &
+      get_locator() const
+      {
+        return state.locator;
+      }
+      double
+      get_time_step() const
+      {
+        return time_step_control.get_time_step();
+      }
+      double
+      get_time() const
+      {
+        return state.time;
+      }
+      unsigned int
+      get_n_dofs() const
+      {
+        return state.dof_handler.n_dofs();
+      }
+
+    private:
+      void
+      setup_space_and_grid();
+      void
+      setup_particles();
+      void
+      locate_particles();
+      void
+      postprocess(const double wall_time);
+      void
+      write_output();
+
+      MPI_Comm           comm;
+      ConditionalOStream pcout;
+      State<dim>         state;
+
+      // Scene description.
+      Mesh::MeshGenerator<dim>                   mesh_generator;
+      Particles::ParticleGenerator<dim>          particle_generator;
+      typename Solver::GridSystem<dim>::Parameters grid_parameters;
+      std::string                                basis_name;
+      std::string                                velocity_expression;
+      std::string                                velocity_constants;
+      std::array<std::vector<std::string>, dim>  fixed_names;
+      unsigned int                               output_interval = 0;
+      unsigned int                               error_interval  = 1;
+      unsigned int                               subdivisions    = 4;
+      std::vector<double>                        tracked_point;
+
+      // Components.
+      std::unique_ptr<TransferScheme<dim>>                transfer;
+      TimeStepControl                                     time_step_control;
+      StabilityMonitor                                    monitor;
+      std::unique_ptr<Postprocess::Reference<dim>>        reference;
+      Postprocess::EnergyStatistics<dim>                  energy_statistics;
+      std::unique_ptr<Postprocess::ErrorNorms<dim>>       error_norms;
+      std::unique_ptr<Postprocess::TrackedParticle<dim>>  tracked;
+      std::unique_ptr<Postprocess::OutputWriter<dim>>     writer;
+
+      // Run record.
+      std::string  output_directory;
+      TableHandler statistics;
+      TimerOutput  timer;
+      Status       status           = Status::completed;
+      unsigned int failed_step      = 0;
+      double       failed_time      = 0;
+      unsigned int total_iterations = 0;
+    };
+
+    /// A Simulator<1> or Simulator<2> (Geometry/Dimension).
+    std::unique_ptr<SimulatorBase>
+    create_simulator(const unsigned int dimension, MPI_Comm comm);
+  } // namespace Simulator
+} // namespace psmpm
+
+#endif

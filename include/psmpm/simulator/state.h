@@ -1,0 +1,66 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_simulator_state_h
+#define psmpm_simulator_state_h
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <psmpm/basis/space.h>
+#include <psmpm/material/material.h>
+#include <psmpm/mesh/cell_locator.h>
+#include <psmpm/particles/particle_set.h>
+#include <psmpm/solver/grid_system.h>
+
+#include <memory>
+#include <vector>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    using namespace dealii;
+
+    /**
+     * The discrete state of an MPM run that the components (transfer
+     * scheme, time step control, monitors, postprocessors) read and
+     * advance: mesh and space, grid system, material, particles, the
+     * basis values at the particles, the grid fields and the time.
+     */
+    template <int dim>
+    struct State
+    {
+      explicit State(MPI_Comm comm);
+      ~State();
+
+      /// Values and gradients of the basis at every particle (after the
+      /// particles have moved or migrated).
+      void
+      evaluate_shape_functions();
+
+      MPI_Comm                                  comm;
+      parallel::shared::Triangulation<dim>      triangulation;
+      DoFHandler<dim>                           dof_handler;
+      std::unique_ptr<Basis::Space<dim>>        space;
+      Mesh::CellLocator<dim>                    locator;
+      std::unique_ptr<Solver::GridSystem<dim>>  grid;
+      std::unique_ptr<Material::Material<dim>>  material;
+      Particles::ParticleSet<dim>               particles;
+      Tensor<1, dim>                            gravity;
+      std::vector<unsigned int>                 cell_owner; ///< MPI rank
+      /// Basis at the particles, dofs_per_cell per particle.
+      std::vector<double>                       shape_values;
+      std::vector<Tensor<1, dim>>               shape_gradients;
+      /// Grid fields in local relevant numbering.
+      std::vector<Tensor<1, dim>>               grid_velocity;
+      std::vector<Tensor<1, dim>>               grid_acceleration;
+      double                                    time = 0;
+      unsigned int                              step = 0;
+      /// Length of the step under way (0 before the first).
+      double                                    dt = 0;
+    };
+  } // namespace Simulator
+} // namespace psmpm
+
+#endif

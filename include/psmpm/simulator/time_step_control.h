@@ -1,0 +1,91 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_simulator_time_step_control_h
+#define psmpm_simulator_time_step_control_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <psmpm/simulator/state.h>
+
+#include <string>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    using namespace dealii;
+
+    /**
+     * The time step and the end time (subsection "Time"): a fixed step, or
+     * dt = C f h_min / c_p with the Courant number C, the measured
+     * stability factor f of the space and mass strategy, the smallest
+     * triangle height (element length in 1D) and the material's wave
+     * speed. A fixed step above h_min / c_p is rejected (thesis eq. 2.48
+     * with the p-wave speed), one above the measured limit warned about.
+     */
+    class TimeStepControl
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// Choose the step for the initial state; throws for a fixed step
+      /// above the bound.
+      template <int dim>
+      void
+      initialize(const State<dim> &state);
+
+      /// The step to take from @p time (the last one ends at end_time).
+      double
+      next(const double time) const
+      {
+        return std::min(time_step, end_time - time);
+      }
+
+      /// Whether @p time has reached the end time (to round-off).
+      bool
+      finished(const double time) const
+      {
+        return !(time < end_time * (1 - 1e-12));
+      }
+
+      /// @p time snapped to the end time if round-off in the sum of steps
+      /// left a sliver of a last step.
+      double
+      snap(const double time) const
+      {
+        return std::abs(end_time - time) < 1e-9 * time_step ? end_time : time;
+      }
+
+      double
+      get_time_step() const
+      {
+        return time_step;
+      }
+      double
+      get_end_time() const
+      {
+        return end_time;
+      }
+      /// Non-empty if the step is above the measured stability limit.
+      const std::string &
+      warning() const
+      {
+        return time_step_warning;
+      }
+
+    private:
+      double      end_time        = 0.02;
+      double      fixed_step      = 0;
+      double      courant_number  = 0.5;
+      bool        check_time_step = true;
+      double      time_step       = 0;
+      std::string time_step_warning;
+    };
+  } // namespace Simulator
+} // namespace psmpm
+
+#endif

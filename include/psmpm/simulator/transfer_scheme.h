@@ -1,0 +1,50 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_simulator_transfer_scheme_h
+#define psmpm_simulator_transfer_scheme_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <psmpm/base/registry.h>
+#include <psmpm/simulator/stability_monitor.h>
+#include <psmpm/simulator/state.h>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    /**
+     * One MPM time step between particles and grid (subsection
+     * "Transfer", entry "Scheme"): from the particles' mass, momentum and
+     * stress to grid accelerations and velocities and back to particle
+     * velocities, stresses (through the material), volumes and positions.
+     * Locating the moved particles is the simulator's job. Failures go to
+     * the monitor; kernels never throw for an unstable state.
+     *
+     * Schemes register in TransferSchemeRegistry<dim>.
+     */
+    template <int dim>
+    class TransferScheme
+    {
+    public:
+      virtual ~TransferScheme() = default;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /// Advance @p state by state.dt. Returns false if the step had to
+      /// be abandoned (a failure is reported, positions are not advanced).
+      virtual bool
+      step(State<dim>       &state,
+           StabilityMonitor &monitor,
+           TimerOutput      &timer) = 0;
+    };
+
+    template <int dim>
+    using TransferSchemeRegistry = Registry<TransferScheme<dim>>;
+  } // namespace Simulator
+} // namespace psmpm
+
+#endif

@@ -1,0 +1,77 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_solver_mass_strategy_h
+#define psmpm_solver_mass_strategy_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <psmpm/base/registry.h>
+
+#include <string>
+#include <vector>
+
+namespace psmpm
+{
+  namespace Solver
+  {
+    using namespace dealii;
+
+    template <int dim>
+    class GridSystem;
+
+    /**
+     * How the grid's mass matrix is formed from the particle mass
+     * (subsection "Mass matrix", entry "Type"). A strategy decides whether
+     * a sparse matrix is built at all and may, once per step before
+     * assembly, change the per-cell particle mass matrices (partial
+     * lumping) or the step's constraints (deactivation, extrapolation).
+     * Thesis chapter 5 and beyond; doc/stability.md compares them.
+     *
+     * Strategies register in MassStrategyRegistry<dim>; the factory gets
+     * Mass matrix/Threshold (the relative support below which a function
+     * counts as poorly supported), which strategies may ignore.
+     */
+    template <int dim>
+    class MassStrategy
+    {
+    public:
+      virtual ~MassStrategy() = default;
+
+      /// false: the lumped (row-sum) diagonal is the mass matrix and no
+      /// sparse matrix is built.
+      virtual bool
+      uses_matrix() const
+      {
+        return true;
+      }
+
+      /// true if constraints may tie a DoF to DoFs beyond the cell's
+      /// neighbours, so that every DoF must be locally relevant.
+      virtual bool
+      needs_all_dofs() const
+      {
+        return false;
+      }
+
+      /**
+       * Called once per step after the per-cell particle mass matrices
+       * are accumulated and before they are assembled. @p diagonal is the
+       * particle diagonal M_ii in local relevant numbering. Returns true
+       * if the step's constraints changed (the sparsity is rebuilt).
+       */
+      virtual bool
+      prepare(GridSystem<dim> &grid, const std::vector<double> &diagonal)
+      {
+        (void)grid;
+        (void)diagonal;
+        return false;
+      }
+    };
+
+    template <int dim>
+    using MassStrategyRegistry = Registry<MassStrategy<dim>, double>;
+  } // namespace Solver
+} // namespace psmpm
+
+#endif

@@ -1,0 +1,100 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/postprocess/tracked_particle.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace psmpm
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    TrackedParticle<dim>::TrackedParticle(const Point<dim>     &point,
+                                          const Reference<dim> &reference)
+      : point(point)
+      , reference(reference)
+      , axis(reference.axis())
+    {}
+
+    template <int dim>
+    void
+    TrackedParticle<dim>::initialize(const Simulator::State<dim> &state)
+    {
+      const auto   &particles = state.particles;
+      double        best      = std::numeric_limits<double>::max();
+      std::uint64_t mine      = 0;
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        {
+          const double d = particles.initial_position[p].distance(point);
+          if (d < best || (d == best && particles.id[p] < mine))
+            best = d, mine = particles.id[p];
+        }
+      const auto min = Utilities::MPI::min_max_avg(best, state.comm).min;
+      // Smallest id among the ranks at the minimal distance.
+      const double candidate = best == min ? double(mine) : 1e300;
+      id = static_cast<std::uint64_t>(Utilities::MPI::min(candidate, state.comm));
+    }
+
+    template <int dim>
+    void
+    TrackedParticle<dim>::execute(const Simulator::State<dim> &state)
+    {
+      // Sum over ranks: only the owner contributes.
+      std::vector<double> v(5, 0.);
+      const auto         &particles = state.particles;
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        if (particles.id[p] == id)
+          {
+            const auto r =
+              reference.evaluate(particles.initial_position[p], state.time);
+            v = {particles.displacement[p][axis],
+                 particles.velocity[p][axis],
+                 r.displacement[axis],
+                 r.velocity[axis],
+                 0.};
+          }
+      std::vector<double> total(v.size());
+      MPI_Allreduce(
+        v.data(), total.data(), v.size(), MPI_DOUBLE, MPI_SUM, state.comm);
+      history.push_back({{state.time, total[0], total[1], total[2], total[3]}});
+      velocity2 += (total[1] - total[3]) * (total[1] - total[3]);
+      displacement2 += (total[0] - total[2]) * (total[0] - total[2]);
+    }
+
+    template <int dim>
+    void
+    TrackedParticle<dim>::write(const std::string &directory,
+                                MPI_Comm           comm) const
+    {
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      std::ofstream out(directory + "/tracked_particle.txt");
+      out
+        << "# particle starting nearest to (" << point << "), id " << id
+        << ", component " << axis << "\n"
+        << "# time displacement velocity reference_displacement reference_velocity\n";
+      out.precision(10);
+      for (const auto &r : history)
+        out << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3] << ' ' << r[4]
+            << '\n';
+    }
+
+    template <int dim>
+    void
+    TrackedParticle<dim>::fill_summary(Summary &summary) const
+    {
+      if (history.empty())
+        return;
+      summary.set("errors.tracked_velocity_rms",
+                  std::sqrt(velocity2 / history.size()));
+      summary.set("errors.tracked_displacement_rms",
+                  std::sqrt(displacement2 / history.size()));
+    }
+
+    template class TrackedParticle<1>;
+    template class TrackedParticle<2>;
+  } // namespace Postprocess
+} // namespace psmpm

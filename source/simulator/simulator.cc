@@ -1,0 +1,571 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <psmpm/base/format.h>
+#include <psmpm/simulator/simulator.h>
+
+#include <fstream>
+#include <map>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    namespace
+    {
+      std::vector<std::string>
+      split(const std::string &s)
+      {
+        return Utilities::split_string_list(s, ',');
+      }
+    } // namespace
+
+    template <int dim>
+    Simulator<dim>::Simulator(MPI_Comm comm)
+      : comm(comm)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+      , state(comm)
+      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    {}
+
+    template <int dim>
+    void
+    Simulator<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      // Selections list the 2D registries, which hold every variant; a
+      // variant without a 1D instance is rejected when created.
+      Mesh::MeshGenerator<2>::declare_parameters(prm);
+      Particles::ParticleGenerator<2>::declare_parameters(prm);
+      Material::Material<2>::declare_parameters(prm);
+      Postprocess::Reference<2>::declare_parameters(prm);
+      Solver::GridSystem<2>::Parameters::declare_parameters(prm);
+      TransferScheme<2>::declare_parameters(prm);
+      TimeStepControl::declare_parameters(prm);
+      StabilityMonitor::declare_parameters(prm);
+      Postprocess::OutputWriter<2>::declare_parameters(prm);
+
+      prm.enter_subsection("Basis");
+      prm.declare_entry("Type",
+                        "linear",
+                        Patterns::Selection(
+                          Basis::SpaceRegistry<2>::instance().selection()),
+                        Basis::SpaceRegistry<2>::instance().documentation());
+      prm.leave_subsection();
+
+      prm.enter_subsection("Initial conditions");
+      prm.declare_entry(
+        "Velocity",
+        "v0*sin(pi*x/L); 0",
+        Patterns::Anything(),
+        "Initial velocity as a function of x, y: one component per "
+        "dimension, separated by ';'.");
+      prm.declare_entry("Function constants",
+                        "v0=0.1, L=25",
+                        Patterns::Anything(),
+                        "Constants for the velocity expression, name=value, "
+                        "comma separated (pi is predefined).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Body force");
+      prm.declare_entry("Gravity",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 1, 2),
+                        "Gravitational acceleration vector [m/s^2], one "
+                        "component per dimension.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Fixed x",
+                        "left, right",
+                        Patterns::Anything(),
+                        "Boundaries (names) where the x velocity is zero.");
+      prm.declare_entry("Fixed y",
+                        "left, right, bottom, top",
+                        Patterns::Anything(),
+                        "Boundaries (names) where the y velocity is zero "
+                        "(2D only).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
+      prm.declare_entry("Interval",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write VTU output every this many steps (0: first and "
+                        "last step only).");
+      prm.declare_entry("Error interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Compute error norms against the reference every this "
+                        "many steps (and at the end).");
+      prm.declare_entry("Tracked point",
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 2),
+                        "Initial position (one coordinate per dimension): the "
+                        "particle that starts nearest to it is recorded every "
+                        "step in tracked_particle.txt with the reference, and "
+                        "the RMS of the differences over time goes into "
+                        "summary.json (a grid-crossing noise measure).");
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      mesh_generator.parse_parameters(prm);
+      particle_generator.parse_parameters(prm);
+      particle_generator.check_count(mesh_generator);
+      state.material = Material::Material<dim>::create(prm);
+      grid_parameters.parse_parameters(prm);
+      AssertThrow(Solver::MassStrategyRegistry<dim>::instance().has(
+                    grid_parameters.type),
+                  ExcMessage("Mass matrix/Type = " + grid_parameters.type +
+                             ": not available in " + std::to_string(dim) +
+                             "D."));
+
+      prm.enter_subsection("Basis");
+      basis_name = prm.get("Type");
+      prm.leave_subsection();
+      AssertThrow(Basis::SpaceRegistry<dim>::instance().has(basis_name),
+                  ExcMessage("Basis/Type = " + basis_name +
+                             ": not available in " + std::to_string(dim) +
+                             "D (known: " +
+                             Basis::SpaceRegistry<dim>::instance().names() +
+                             ")."));
+
+      prm.enter_subsection("Transfer");
+      transfer = TransferSchemeRegistry<dim>::instance().create(
+        prm.get("Scheme"), "Transfer/Scheme");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Initial conditions");
+      velocity_expression = prm.get("Velocity");
+      velocity_constants  = prm.get("Function constants");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Body force");
+      const auto g = Utilities::string_to_double(split(prm.get("Gravity")));
+      prm.leave_subsection();
+      AssertThrow(g.size() == dim,
+                  ExcMessage("Body force/Gravity = " + prm_value(g[0]) +
+                             (g.size() > 1 ? ", " + prm_value(g[1]) : "") +
+                             ": needs " + std::to_string(dim) +
+                             " component(s) in " + std::to_string(dim) +
+                             "D."));
+      for (unsigned int d = 0; d < dim; ++d)
+        state.gravity[d] = g[d];
+
+      reference = Postprocess::Reference<dim>::create(prm,
+                                                      *state.material,
+                                                      mesh_generator.length,
+                                                      mesh_generator.height,
+                                                      state.gravity);
+
+      prm.enter_subsection("Boundary conditions");
+      const char *fixed_entries[] = {"Fixed x", "Fixed y"};
+      for (unsigned int d = 0; d < dim; ++d)
+        fixed_names[d] = split(prm.get(fixed_entries[d]));
+      prm.leave_subsection();
+
+      time_step_control.parse_parameters(prm);
+
+      prm.enter_subsection("Output");
+      output_interval = prm.get_integer("Interval");
+      error_interval  = prm.get_integer("Error interval");
+      subdivisions    = prm.get_integer("Subdivisions");
+      tracked_point = Utilities::string_to_double(split(prm.get("Tracked point")));
+      prm.leave_subsection();
+      AssertThrow(tracked_point.empty() || tracked_point.size() == dim,
+                  ExcMessage("Output/Tracked point must be empty or have " +
+                             std::to_string(dim) + " coordinate(s)."));
+
+      monitor.parse_parameters(prm);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::setup()
+    {
+      mesh_generator.create(state.triangulation);
+      state.locator.reinit(state.triangulation);
+      setup_space_and_grid();
+      time_step_control.initialize(state);
+      setup_particles();
+      state.evaluate_shape_functions();
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::setup_space_and_grid()
+    {
+      state.space = Basis::create_space<dim>(basis_name);
+      state.dof_handler.reinit(state.triangulation);
+      state.dof_handler.distribute_dofs(state.space->dof_layout());
+      state.space->reinit(state.dof_handler);
+
+      const char *fixed_entries[] = {"x", "y"};
+      std::array<std::set<types::boundary_id>, dim> fixed;
+      for (unsigned int d = 0; d < dim; ++d)
+        for (const auto &name : fixed_names[d])
+          {
+            try
+              {
+                fixed[d].insert(mesh_generator.boundary_id(name));
+              }
+            catch (const ExcMessage &e)
+              {
+                AssertThrow(false,
+                            ExcMessage(std::string("Boundary conditions/Fixed ") +
+                                       fixed_entries[d] + ": " + e.what()));
+              }
+          }
+      state.grid = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
+                                                              *state.space,
+                                                              state.dof_handler,
+                                                              comm);
+      state.grid->reinit(fixed, state.material->density);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::setup_particles()
+    {
+      // Particles of the locally owned cells, with their initial state
+      // and velocity.
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      state.cell_owner.resize(state.triangulation.n_active_cells());
+      for (const auto &cell : state.triangulation.active_cell_iterators())
+        state.cell_owner[cell->active_cell_index()] = cell->subdomain_id();
+      auto &particles = state.particles;
+      particles.set_state_names(state.material->state_names());
+      particle_generator.generate(
+        mesh_generator,
+        state.triangulation,
+        state.locator,
+        state.material->density,
+        [this, rank](const unsigned int c) { return state.cell_owner[c] == rank; },
+        particles);
+      state.material->initialize(particles.size(), particles.state.data());
+
+      std::map<std::string, double> constants{{"pi", numbers::PI}};
+      for (const auto &c : split(velocity_constants))
+        {
+          const auto kv = Utilities::split_string_list(c, '=');
+          AssertThrow(kv.size() == 2,
+                      ExcMessage("Initial conditions/Function constants: '" +
+                                 c + "' is not name=value."));
+          constants[kv[0]] = Utilities::string_to_double(kv[1]);
+        }
+      FunctionParser<dim> velocity(dim);
+      try
+        {
+          velocity.initialize(dim == 1 ? "x" : "x,y",
+                              velocity_expression,
+                              constants);
+          for (std::size_t i = 0; i < particles.size(); ++i)
+            for (unsigned int d = 0; d < dim; ++d)
+              particles.velocity[i][d] =
+                velocity.value(particles.position[i], d);
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false,
+                      ExcMessage("Initial conditions/Velocity = '" +
+                                 velocity_expression + "': " + e.what()));
+        }
+      particles.sort_by_cell(state.triangulation.n_active_cells());
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::locate_particles()
+    {
+      TimerOutput::Scope t(timer, "locate");
+      auto              &particles = state.particles;
+      const unsigned int rank      = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(comm);
+      std::map<unsigned int, std::vector<double>> outgoing;
+      std::vector<bool>                           keep(particles.size(), true);
+      bool                                        any_leaving = false;
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        {
+          const unsigned int c =
+            state.locator.locate(particles.position[p], particles.cell[p]);
+          if (c == Mesh::CellLocator<dim>::invalid)
+            {
+              std::string where = prm_value(particles.position[p][0]);
+              for (unsigned int d = 1; d < dim; ++d)
+                where += ", " + prm_value(particles.position[p][d]);
+              monitor.report(Failure::left_mesh,
+                             "particle " + std::to_string(particles.id[p]) +
+                               " left the mesh at (" + where + ")");
+              continue; // keep its old cell; the run stops after this step
+            }
+          particles.cell[p] = c;
+          if (n_ranks > 1 && state.cell_owner[c] != rank)
+            {
+              particles.pack(p, outgoing[state.cell_owner[c]]);
+              keep[p]     = false;
+              any_leaving = true;
+            }
+        }
+      if (n_ranks > 1)
+        {
+          if (any_leaving)
+            particles.compress(keep);
+          const auto incoming = Utilities::MPI::some_to_some(comm, outgoing);
+          for (const auto &in : incoming)
+            {
+              const std::size_t first = particles.size();
+              particles.unpack(in.second);
+              for (std::size_t p = first; p < particles.size(); ++p)
+                particles.cell[p] = state.locator.locate(particles.position[p]);
+            }
+        }
+      state.evaluate_shape_functions();
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::do_time_step(const double dt)
+    {
+      state.dt = dt;
+      if (!transfer->step(state, monitor, timer))
+        return;
+      total_iterations += state.grid->statistics().iterations;
+      locate_particles();
+      state.time = time_step_control.snap(state.time + dt);
+    }
+
+    template <int dim>
+    Postprocess::Errors
+    Simulator<dim>::compute_errors() const
+    {
+      if (!reference)
+        return {};
+      return Postprocess::ErrorNorms<dim>::compute(state, *reference);
+    }
+
+    template <int dim>
+    Postprocess::Energies<dim>
+    Simulator<dim>::compute_energies() const
+    {
+      return energy_statistics.compute(state);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::postprocess(const double wall_time)
+    {
+      const auto  e  = compute_energies();
+      const auto &gs = state.grid->statistics();
+      statistics.add_value("step", state.step);
+      statistics.add_value("time", state.time);
+      statistics.add_value("dt", state.dt);
+      Postprocess::EnergyStatistics<dim>::add_columns(e, statistics);
+      statistics.add_value("cg_iterations", gs.iterations);
+      statistics.add_value("condition_number", gs.condition_number);
+      statistics.add_value("min_relative_diagonal", gs.min_relative_diagonal);
+      statistics.add_value("treated_dofs", gs.n_treated_dofs);
+      statistics.add_value("mass_diag_ratio",
+                           gs.max_diagonal > 0 ?
+                             gs.min_diagonal / gs.max_diagonal :
+                             0.);
+      if (reference)
+        {
+          reference->advance_to(state.time);
+          error_norms->execute(state,
+                               time_step_control.finished(state.time),
+                               statistics);
+          if (tracked)
+            tracked->execute(state);
+        }
+      statistics.add_value("wall_time", wall_time);
+      if (monitor.check(e.total(), e.scale(), e.momentum.norm(), comm) &&
+          status == Status::completed)
+        {
+          status      = Status::unstable;
+          failed_step = state.step;
+          failed_time = state.time;
+        }
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::write_output()
+    {
+      TimerOutput::Scope t(timer, "output");
+      writer->write_particles(state.step, state.time, state.particles);
+      writer->write_grid(state.step,
+                         state.time,
+                         state.dof_handler,
+                         *state.space,
+                         state.grid->cell_dofs(),
+                         {{"velocity", &state.grid_velocity},
+                          {"acceleration", &state.grid_acceleration}},
+                         {{"mass", &state.grid->lumped_mass()}});
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          std::vector<std::string> columns = {"time",
+                                              "dt",
+                                              "kinetic_energy",
+                                              "strain_energy",
+                                              "gravity_energy",
+                                              "total_energy",
+                                              "mass",
+                                              "momentum_x",
+                                              "mass_diag_ratio",
+                                              "condition_number",
+                                              "min_relative_diagonal",
+                                              "wall_time"};
+          if (dim > 1)
+            columns.push_back("momentum_y");
+          if (reference)
+            for (const char *c : {"displacement_L2", "velocity_L2", "stress_L2"})
+              columns.push_back(c);
+          for (const auto &c : columns)
+            {
+              statistics.set_scientific(c, true);
+              statistics.set_precision(c, 8);
+            }
+          std::ofstream out(output_directory + "/statistics.txt");
+          statistics.write_text(
+            out, TableHandler::table_with_separate_column_description);
+        }
+      if (tracked)
+        tracked->write(output_directory, comm);
+    }
+
+    template <int dim>
+    Status
+    Simulator<dim>::run(const std::string &directory)
+    {
+      output_directory = directory;
+      writer = std::make_unique<Postprocess::OutputWriter<dim>>(directory,
+                                                                comm,
+                                                                subdivisions);
+      Timer wall;
+      wall.start();
+      if (reference)
+        {
+          error_norms =
+            std::make_unique<Postprocess::ErrorNorms<dim>>(*reference,
+                                                           error_interval);
+          if (!tracked_point.empty())
+            {
+              Point<dim> X;
+              for (unsigned int d = 0; d < dim; ++d)
+                X[d] = tracked_point[d];
+              tracked =
+                std::make_unique<Postprocess::TrackedParticle<dim>>(X,
+                                                                    *reference);
+              tracked->initialize(state);
+            }
+        }
+      state.grid_velocity.assign(state.grid->relevant_dofs().n_elements(),
+                                 Tensor<1, dim>());
+      state.grid_acceleration = state.grid_velocity;
+      state.dt                = 0;
+      postprocess(0);
+      write_output();
+
+      if (!time_step_control.warning().empty())
+        pcout << "psmpm: warning: " << time_step_control.warning()
+              << std::endl;
+      pcout << "psmpm: " << state.space->name() << " basis, "
+            << state.dof_handler.n_dofs() << " DoFs, "
+            << Utilities::MPI::sum(state.particles.size(), comm)
+            << " particles, dt = " << time_step_control.get_time_step()
+            << ", end time = " << time_step_control.get_end_time()
+            << std::endl;
+
+      // The algorithm: step, measure, check, write.
+      while (!time_step_control.finished(state.time) &&
+             status == Status::completed)
+        {
+          do_time_step(time_step_control.next(state.time));
+          ++state.step;
+          postprocess(wall.wall_time());
+          const bool last = time_step_control.finished(state.time) ||
+                            status != Status::completed;
+          if (last ||
+              (output_interval > 0 && state.step % output_interval == 0))
+            write_output();
+        }
+      wall.stop();
+      if (!quiet)
+        {
+          timer.print_wall_time_statistics(comm);
+          if (status == Status::unstable)
+            pcout << "psmpm: UNSTABLE at step " << failed_step << ": "
+                  << monitor.reason() << std::endl;
+        }
+      return status;
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::fill_summary(Postprocess::Summary &summary) const
+    {
+      summary.set("status",
+                  status == Status::completed ? "completed" : "unstable");
+      if (status == Status::unstable)
+        {
+          summary.set("reason", monitor.reason());
+          summary.set_integer("failed_step", failed_step);
+          summary.set("failed_time", failed_time);
+        }
+      summary.set_integer("steps", state.step);
+      if (!time_step_control.warning().empty())
+        summary.set("warning", time_step_control.warning());
+      summary.set_integer("dimension", dim);
+      summary.set_integer("n_dofs", state.dof_handler.n_dofs());
+      summary.set_integer("n_cells", state.triangulation.n_active_cells());
+      summary.set_integer("n_particles",
+                          Utilities::MPI::sum(state.particles.size(), comm));
+      summary.set_integer("n_mpi_ranks", Utilities::MPI::n_mpi_processes(comm));
+      summary.set_integer("cg_iterations", total_iterations);
+      summary.set("end_time", state.time);
+      summary.set("time_step", time_step_control.get_time_step());
+      summary.set("basis", state.space->name());
+      summary.set("mass_matrix", grid_parameters.type);
+      summary.set("material", state.material->name());
+      if (reference)
+        {
+          error_norms->fill_summary(state, summary);
+          if (tracked)
+            tracked->fill_summary(summary);
+        }
+      // Throughput of the time loop proper: every timed phase but output.
+      const auto timings = timer.get_summary_data(TimerOutput::total_wall_time);
+      double     loop    = 0;
+      for (const auto &t : timings)
+        {
+          std::string key = t.first;
+          std::replace(key.begin(), key.end(), ' ', '_');
+          summary.set("timers_s." + key, t.second);
+          if (t.first != "output")
+            loop += t.second;
+        }
+      summary.set("time_loop_s", loop);
+      if (loop > 0)
+        summary.set("particle_steps_per_second",
+                    summary.get_number("n_particles") * state.step / loop);
+    }
+
+    std::unique_ptr<SimulatorBase>
+    create_simulator(const unsigned int dimension, MPI_Comm comm)
+    {
+      if (dimension == 1)
+        return std::make_unique<Simulator<1>>(comm);
+      return std::make_unique<Simulator<2>>(comm);
+    }
+
+    template class Simulator<1>;
+    template class Simulator<2>;
+  } // namespace Simulator
+} // namespace psmpm

@@ -1,0 +1,93 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/base/format.h>
+#include <psmpm/simulator/time_step_control.h>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    void
+    TimeStepControl::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      prm.declare_entry("End time",
+                        "0.02",
+                        Patterns::Double(0),
+                        "End time [s].");
+      prm.declare_entry("Time step",
+                        "1e-5",
+                        Patterns::Double(0),
+                        "Fixed time step [s]; 0 = automatic from the Courant "
+                        "number. A fixed step above the stability bound is "
+                        "an error.");
+      prm.declare_entry(
+        "Courant number",
+        "0.5",
+        Patterns::Double(0),
+        "dt = C f h_min / c_p for the automatic time step (c_p: p-wave "
+        "speed, h_min: smallest triangle height, f: measured stability "
+        "factor of the basis and mass matrix, 0.4 to 1.5, doc/stability.md).");
+      prm.declare_entry(
+        "Check stability bound",
+        "true",
+        Patterns::Bool(),
+        "Reject a fixed Time step above h_min/c_p and a Courant "
+        "number above 1 before the run. Switch off only to "
+        "measure stability limits (contrib/stability_study.py).");
+      prm.leave_subsection();
+    }
+
+    void
+    TimeStepControl::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      end_time        = prm.get_double("End time");
+      fixed_step      = prm.get_double("Time step");
+      courant_number  = prm.get_double("Courant number");
+      check_time_step = prm.get_bool("Check stability bound");
+      prm.leave_subsection();
+      AssertThrow(end_time > 0, ExcMessage("Time/End time must be positive."));
+      AssertThrow(
+        courant_number > 0 && (courant_number <= 1 || !check_time_step),
+        ExcMessage("Time/Courant number = " + prm_value(courant_number) +
+                   ": must lie in (0, 1]."));
+    }
+
+    template <int dim>
+    void
+    TimeStepControl::initialize(const State<dim> &state)
+    {
+      const double h_min  = state.locator.minimum_height();
+      const double c_p    = state.material->p_wave_speed();
+      const double bound  = h_min / c_p;
+      const double factor = state.space->stability_factor(!state.grid->uses_matrix());
+      if (fixed_step > 0)
+        {
+          AssertThrow(fixed_step <= bound || !check_time_step,
+                      ExcMessage("Time/Time step = " + prm_value(fixed_step) +
+                                 " exceeds the stability bound h_min/c_p = " +
+                                 prm_value(bound) + " (h_min = " +
+                                 prm_value(h_min) + ", c_p = " +
+                                 prm_value(c_p) + ")."));
+          time_step = fixed_step;
+        }
+      else
+        time_step = courant_number * factor * bound;
+      time_step_warning.clear();
+      if (time_step > factor * bound)
+        time_step_warning =
+          "Time/Time step = " + prm_value(time_step) +
+          " is above the measured stability limit of this basis and mass "
+          "matrix, about " +
+          prm_value(factor * bound) +
+          " (doc/stability.md); the run may become unstable.";
+    }
+
+    template void
+    TimeStepControl::initialize(const State<1> &);
+    template void
+    TimeStepControl::initialize(const State<2> &);
+  } // namespace Simulator
+} // namespace psmpm

@@ -1,0 +1,189 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/lac/solver_control.h>
+
+#include <psmpm/base/format.h>
+#include <psmpm/simulator/transfer_scheme.h>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    namespace
+    {
+      /**
+       * The modified update of thesis Fig. 2.5 (Sulsky's MUSL): particle
+       * momentum and internal force to the grid, grid acceleration,
+       * particle velocities, then the grid velocity projected again from
+       * the updated particle momentum for the stress and position update.
+       * Every particle loop reads the basis cache of the state; the
+       * material updates all particles in one call.
+       */
+      template <int dim>
+      class MUSL : public TransferScheme<dim>
+      {
+      public:
+        bool
+        step(State<dim>       &state,
+             StabilityMonitor &monitor,
+             TimerOutput      &timer) override
+        {
+          particles_to_grid(state, timer);
+          try
+            {
+              TimerOutput::Scope t(timer, "solve");
+              state.grid->solve(state.grid_acceleration);
+            }
+          catch (const SolverControl::NoConvergence &e)
+            {
+              report(monitor, e);
+              return false;
+            }
+          update_particle_velocities(state, timer);
+          try
+            {
+              TimerOutput::Scope t(timer, "solve");
+              state.grid->solve(state.grid_velocity);
+            }
+          catch (const SolverControl::NoConvergence &e)
+            {
+              report(monitor, e);
+              return false;
+            }
+          update_particle_state(state, monitor, timer);
+          return true;
+        }
+
+      private:
+        static void
+        report(StabilityMonitor &monitor, const SolverControl::NoConvergence &e)
+        {
+          monitor.report(Failure::solver,
+                         "mass matrix solver did not converge (" +
+                           std::to_string(e.last_step) +
+                           " iterations, residual " +
+                           prm_value(e.last_residual) + ")");
+        }
+
+        static void
+        particles_to_grid(State<dim> &state, TimerOutput &timer)
+        {
+          TimerOutput::Scope t(timer, "particle to grid");
+          auto              &grid = *state.grid;
+          grid.zero_cell_mass();
+          grid.zero_cell_rhs();
+          const auto         &particles  = state.particles;
+          const unsigned int  n          = grid.dofs_per_cell;
+          auto               &cells      = grid.cell_arrays();
+          const bool          consistent = !cells.mass.empty();
+          double             *lumped     = cells.lumped.data();
+          double             *mass_mat   = cells.mass.data();
+          Tensor<1, dim>     *rhs        = cells.rhs.data();
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int             base = particles.cell[p] * n;
+              const double                   m    = particles.mass[p];
+              const double                   V    = particles.volume[p];
+              const SymmetricTensor<2, dim> &s    = particles.stress[p];
+              const Tensor<1, dim>           external = m * state.gravity;
+              const double         *phi  = &state.shape_values[p * n];
+              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  lumped[base + k] += m * phi[k];
+                  rhs[base + k] += phi[k] * external - V * (s * grad[k]);
+                  if (consistent)
+                    {
+                      double      *row = mass_mat + (base + k) * n;
+                      const double mk  = m * phi[k];
+                      for (unsigned int l = 0; l < n; ++l)
+                        row[l] += mk * phi[l];
+                    }
+                }
+            }
+          grid.assemble_mass();
+        }
+
+        static void
+        update_particle_velocities(State<dim> &state, TimerOutput &timer)
+        {
+          TimerOutput::Scope t(timer, "grid to particle");
+          auto              &grid = *state.grid;
+          grid.zero_cell_rhs();
+          auto               &particles = state.particles;
+          const unsigned int  n         = grid.dofs_per_cell;
+          const unsigned int *dofs      = grid.cell_dofs().data();
+          Tensor<1, dim>     *rhs       = grid.cell_arrays().rhs.data();
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int base = particles.cell[p] * n;
+              const double      *phi  = &state.shape_values[p * n];
+              Tensor<1, dim>     a;
+              for (unsigned int k = 0; k < n; ++k)
+                a += phi[k] * state.grid_acceleration[dofs[base + k]];
+              particles.velocity[p] += state.dt * a;
+              const Tensor<1, dim> momentum =
+                particles.mass[p] * particles.velocity[p];
+              for (unsigned int k = 0; k < n; ++k)
+                rhs[base + k] += phi[k] * momentum;
+            }
+        }
+
+        void
+        update_particle_state(State<dim>       &state,
+                              StabilityMonitor &monitor,
+                              TimerOutput      &timer)
+        {
+          TimerOutput::Scope  t(timer, "update");
+          auto               &particles = state.particles;
+          const unsigned int  n         = state.grid->dofs_per_cell;
+          const unsigned int *dofs      = state.grid->cell_dofs().data();
+          const double        dt        = state.dt;
+          increments.resize(particles.size());
+          volume_ratio.resize(particles.size());
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int    base = particles.cell[p] * n;
+              const double         *phi  = &state.shape_values[p * n];
+              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
+              Tensor<1, dim>        v;
+              Tensor<2, dim>        L; // velocity gradient, L_ij = dv_i/dx_j
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  const Tensor<1, dim> &vk = state.grid_velocity[dofs[base + k]];
+                  v += phi[k] * vk;
+                  L += outer_product(vk, grad[k]);
+                }
+              increments[p]        = dt * L;
+              const Tensor<1, dim> du = dt * v;
+              particles.displacement[p] += du;
+              particles.position[p] += du;
+            }
+          state.material->update(particles.size(),
+                                 increments.data(),
+                                 particles.stress.data(),
+                                 particles.state.data(),
+                                 volume_ratio.data());
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              particles.volume[p] *= volume_ratio[p];
+              particles.density[p] /= volume_ratio[p];
+              if (!(particles.volume[p] > 0))
+                monitor.report(Failure::non_positive_volume,
+                               "non-positive particle volume (particle " +
+                                 std::to_string(particles.id[p]) + ")");
+            }
+        }
+
+        // Per-step scratch, kept to avoid reallocation.
+        std::vector<Tensor<2, dim>> increments;
+        std::vector<double>         volume_ratio;
+      };
+    } // namespace
+
+    RegisterForDims<TransferSchemeRegistry, MUSL> register_musl(
+      "musl",
+      "modified update stress last (thesis Fig. 2.5)");
+  } // namespace Simulator
+} // namespace psmpm
