@@ -7,7 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <psmpm/app/application.h>
-#include <psmpm/solver/mpm_solver.h>
+#include <psmpm/simulator/simulator.h>
 
 #include "tests.h"
 
@@ -16,7 +16,7 @@
 
 /// Set up @p solver from the default scene with the given overrides.
 inline void
-configure(psmpm::Solver::MPMSolver       &solver,
+configure(psmpm::Simulator::Simulator<2>       &solver,
           const std::vector<std::string> &overrides)
 {
   ParameterHandler prm;
@@ -32,7 +32,7 @@ configure(psmpm::Solver::MPMSolver       &solver,
 /// Largest violation of "the particle lies in its triangle" and whether
 /// every particle's cell agrees with a brute-force search.
 inline std::pair<double, bool>
-check_particles_in_cells(const psmpm::Solver::MPMSolver &solver)
+check_particles_in_cells(const psmpm::Simulator::Simulator<2> &solver)
 {
   const auto &particles = solver.get_particles();
   const auto &locator   = solver.get_locator();

@@ -11,7 +11,7 @@ main(int argc, char **argv)
   std::ofstream                    out("output");
   for (const std::string type : {"lumped", "consistent"})
     {
-      psmpm::Solver::MPMSolver solver(MPI_COMM_WORLD);
+      psmpm::Simulator::Simulator<2> solver(MPI_COMM_WORLD);
       configure(
         solver,
         {"Mesh/Blocks x=6",

@@ -14,7 +14,7 @@ main(int argc, char **argv)
   std::ofstream                    out("output");
   for (const std::string basis_mass : {"lumped"})
     {
-      psmpm::Solver::MPMSolver solver(MPI_COMM_WORLD);
+      psmpm::Simulator::Simulator<2> solver(MPI_COMM_WORLD);
       configure(solver,
                 {"Geometry/Length=4",
                  "Geometry/Height=10",

@@ -13,7 +13,7 @@ main(int argc, char **argv)
   double                           error[2];
   for (unsigned int i = 0; i < 2; ++i)
     {
-      psmpm::Solver::MPMSolver solver(MPI_COMM_WORLD);
+      psmpm::Simulator::Simulator<2> solver(MPI_COMM_WORLD);
       configure(solver, {"Mesh/Blocks x=" + std::to_string(4 << i)});
       while (solver.get_time() < 0.02 - 1e-12)
         solver.do_time_step(1e-5);

@@ -11,7 +11,7 @@ main(int argc, char **argv)
   std::ofstream out(root ? "output" : "/dev/null");
   for (const std::string type : {"consistent", "lumped"})
     {
-      psmpm::Solver::MPMSolver solver(MPI_COMM_WORLD);
+      psmpm::Simulator::Simulator<2> solver(MPI_COMM_WORLD);
       configure(solver,
                 {"Mesh/Blocks x=8",
                  "Mass matrix/Type=" + type,
