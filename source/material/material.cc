@@ -1,0 +1,154 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/base/format.h>
+#include <psmpm/material/material.h>
+
+#include <set>
+#include <sstream>
+
+namespace psmpm
+{
+  namespace Material
+  {
+    namespace
+    {
+      /**
+       * "a|b|c" of the names registered for dim 1 or dim 2. The parameter
+       * file is dimension-independent and Material/Model is declared once,
+       * so the selection must not depend on which dimension declared it;
+       * create() then checks that the model exists for its own dimension.
+       */
+      std::string
+      model_selection()
+      {
+        std::set<std::string> names;
+        for (const std::string &list :
+             {MaterialRegistry<1>::instance().selection(),
+              MaterialRegistry<2>::instance().selection()})
+          {
+            std::istringstream s(list);
+            std::string        name;
+            while (std::getline(s, name, '|'))
+              if (!name.empty())
+                names.insert(name);
+          }
+        std::string selection;
+        for (const auto &name : names)
+          selection += (selection.empty() ? "" : "|") + name;
+        return selection;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    Material<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry("Model",
+                        "hypoelastic",
+                        Patterns::Selection(model_selection()),
+                        "Constitutive model. " +
+                          MaterialRegistry<2>::instance().documentation());
+      // Density keeps the unbounded pattern of the old class: with
+      // Patterns::Double(0), -1 would be rejected while the file is read,
+      // with a message that names "Density" but not "Material/Density"
+      // (tests/app/bad_input_01 requires the latter).
+      prm.declare_entry("Density",
+                        "1",
+                        Patterns::Double(),
+                        "Initial density [kg/m^3], > 0.");
+      prm.declare_entry("Young's modulus",
+                        "100",
+                        Patterns::Double(),
+                        "Young's modulus E [Pa], > 0.");
+      // Patterns::Double bounds are inclusive, so 0.5 (and -1) still
+      // reach the check in parse_parameters() with its explanation.
+      prm.declare_entry("Poisson's ratio",
+                        "0",
+                        Patterns::Double(-1, 0.5),
+                        "Poisson's ratio, -1 < nu < 0.5.");
+      // Entries of the models of both dimensions, for the same reason as
+      // the selection (declaring an entry twice is harmless).
+      MaterialRegistry<1>::instance().declare_parameters(prm);
+      MaterialRegistry<2>::instance().declare_parameters(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    std::unique_ptr<Material<dim>>
+    Material<dim>::create(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      std::unique_ptr<Material<dim>> material;
+      try
+        {
+          material = MaterialRegistry<dim>::instance().create(prm.get("Model"),
+                                                              "Material/Model");
+          material->parse_parameters(prm);
+        }
+      catch (...)
+        {
+          // Leave the subsection so that the caller's handler stays usable.
+          prm.leave_subsection();
+          throw;
+        }
+      prm.leave_subsection();
+      return material;
+    }
+
+
+
+    template <int dim>
+    void
+    Material<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      density        = prm.get_double("Density");
+      youngs_modulus = prm.get_double("Young's modulus");
+      poisson_ratio  = prm.get_double("Poisson's ratio");
+      AssertThrow(density > 0,
+                  ExcMessage("Material/Density = " + prm_value(density) +
+                             ": must be positive."));
+      AssertThrow(youngs_modulus > 0,
+                  ExcMessage(
+                    "Material/Young's modulus = " + prm_value(youngs_modulus) +
+                    ": must be positive."));
+      AssertThrow(poisson_ratio > -1 && poisson_ratio < 0.5,
+                  ExcMessage(
+                    "Material/Poisson's ratio = " + prm_value(poisson_ratio) +
+                    ": must satisfy -1 < nu < 0.5 (0.5 is "
+                    "incompressible, which this explicit "
+                    "formulation cannot represent)."));
+    }
+
+
+
+    template <int dim>
+    void
+    Material<dim>::initialize(const unsigned int n, double *state) const
+    {
+      const unsigned int size = n * n_state();
+      for (unsigned int i = 0; i < size; ++i)
+        state[i] = 0;
+    }
+
+
+
+    template <int dim>
+    double
+    Material<dim>::wave_speed(const SymmetricTensor<2, dim> &,
+                              const double *) const
+    {
+      return p_wave_speed();
+    }
+
+
+
+    template class Material<1>;
+    template class Material<2>;
+  } // namespace Material
+} // namespace psmpm
