@@ -6,7 +6,9 @@
 
 #include <psmpm/postprocess/output_writer.h>
 
+#include <array>
 #include <fstream>
+#include <tuple>
 
 namespace psmpm
 {
@@ -14,6 +16,14 @@ namespace psmpm
   {
     namespace
     {
+      using Ranges = std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>;
+
+      const char component_suffix[] = {'x', 'y', 'z'};
+
       std::string
       piece_name(const std::string &base,
                  const unsigned int step,
@@ -23,22 +33,34 @@ namespace psmpm
                Utilities::int_to_string(rank, 3) + ".vtu";
       }
 
-      /// Write this rank's piece and, on rank 0, the .pvtu record.
+      /// Append the dim components of vector @p name ("name_x", ...).
+      template <int dim>
+      void
+      add_vector(const std::string        &name,
+                 std::vector<std::string> &names,
+                 Ranges                   &ranges)
+      {
+        ranges.emplace_back(
+          names.size(),
+          names.size() + dim - 1,
+          name,
+          DataComponentInterpretation::component_is_part_of_vector);
+        for (unsigned int d = 0; d < dim; ++d)
+          names.push_back(name + "_" + component_suffix[d]);
+      }
+
+      /// Write this rank's piece and, on rank 0, the .pvtu record; return
+      /// the name of the record for the .pvd series.
+      template <int patch_dim, int spacedim>
       std::string
       write_pieces(
-        const std::string              &directory,
-        const std::string              &base,
-        const unsigned int              step,
-        const std::vector<std::string> &names,
-        const std::vector<
-          std::tuple<unsigned int,
-                     unsigned int,
-                     std::string,
-                     DataComponentInterpretation::DataComponentInterpretation>>
-                                                    &ranges,
-        const std::vector<DataOutBase::Patch<0, 2>> *point_patches,
-        const std::vector<DataOutBase::Patch<2, 2>> *cell_patches,
-        MPI_Comm                                     comm)
+        const std::string                                          &directory,
+        const std::string                                          &base,
+        const unsigned int                                          step,
+        const std::vector<std::string>                             &names,
+        const Ranges                                               &ranges,
+        const std::vector<DataOutBase::Patch<patch_dim, spacedim>> &patches,
+        MPI_Comm                                                    comm)
       {
         const unsigned int    rank = Utilities::MPI::this_mpi_process(comm);
         const unsigned int    size = Utilities::MPI::n_mpi_processes(comm);
@@ -46,10 +68,8 @@ namespace psmpm
         flags.compression_level = DataOutBase::VtkFlags::best_speed;
         {
           std::ofstream out(directory + "/" + piece_name(base, step, rank));
-          if (point_patches)
-            DataOutBase::write_vtu(*point_patches, names, ranges, flags, out);
-          else
-            DataOutBase::write_vtu(*cell_patches, names, ranges, flags, out);
+          AssertThrow(out, ExcMessage("psmpm: cannot write into " + directory));
+          DataOutBase::write_vtu(patches, names, ranges, flags, out);
         }
         const std::string record =
           base + "-" + Utilities::int_to_string(step, 5) + ".pvtu";
@@ -63,16 +83,104 @@ namespace psmpm
           }
         return record;
       }
+
+      /**
+       * The sampling points of one cell in real coordinates: in 1D the
+       * s + 1 equispaced points from vertex 0 to vertex 1 (the order in
+       * which deal.II reads a line patch with n_subdivisions = s); in 2D
+       * the (s + 1)(s + 2) / 2 points v0 + i/s (v1 - v0) + j/s (v2 - v0),
+       * i + j <= s, row by row in j (see lattice_index()).
+       */
+      template <int dim>
+      std::vector<Point<dim>>
+      lattice_points(const std::array<Point<dim>, dim + 1> &v,
+                     const unsigned int                     s)
+      {
+        std::vector<Point<dim>> points;
+        if constexpr (dim == 1)
+          for (unsigned int i = 0; i <= s; ++i)
+            points.push_back(v[0] + (double(i) / s) * (v[1] - v[0]));
+        else
+          for (unsigned int j = 0; j <= s; ++j)
+            for (unsigned int i = 0; i + j <= s; ++i)
+              {
+                Point<dim> p = v[0];
+                p += (double(i) / s) * (v[1] - v[0]);
+                p += (double(j) / s) * (v[dim] - v[0]);
+                points.push_back(p);
+              }
+        return points;
+      }
+
+      /// Position of lattice point (i, j) in lattice_points() (2D).
+      unsigned int
+      lattice_index(const unsigned int i,
+                    const unsigned int j,
+                    const unsigned int s)
+      {
+        return j * (s + 1) - j * (j - 1) / 2 + i;
+      }
+
+      /**
+       * The s^2 sub-triangles of the lattice as point triples, oriented as
+       * the cell: the "upward" ones (i, j), (i+1, j), (i, j+1) and the
+       * "downward" ones (i+1, j), (i+1, j+1), (i, j+1).
+       */
+      std::vector<std::array<unsigned int, 3>>
+      sub_triangles(const unsigned int s)
+      {
+        std::vector<std::array<unsigned int, 3>> triangles;
+        for (unsigned int j = 0; j < s; ++j)
+          for (unsigned int i = 0; i + j < s; ++i)
+            {
+              triangles.push_back({{lattice_index(i, j, s),
+                                    lattice_index(i + 1, j, s),
+                                    lattice_index(i, j + 1, s)}});
+              if (i + j + 1 < s)
+                triangles.push_back({{lattice_index(i + 1, j, s),
+                                      lattice_index(i + 1, j + 1, s),
+                                      lattice_index(i, j + 1, s)}});
+            }
+        return triangles;
+      }
     } // namespace
 
-    OutputWriter::OutputWriter(const std::string &directory, MPI_Comm comm)
+
+
+    template <int dim>
+    OutputWriter<dim>::OutputWriter(const std::string &directory,
+                                    MPI_Comm           comm,
+                                    const unsigned int subdivisions)
       : directory(directory)
       , comm(comm)
+      , subdivisions(subdivisions)
     {
+      AssertThrow(subdivisions >= 1,
+                  ExcMessage("psmpm: Output/Subdivisions must be >= 1."));
     }
 
+
+
+    template <int dim>
     void
-    OutputWriter::write_pvd(
+    OutputWriter<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry(
+        "Subdivisions",
+        "4",
+        Patterns::Integer(1, 16),
+        "Each cell of the grid output is split into this many sub-cells per "
+        "edge so that quadratic fields (Powell-Sabin) look smooth in "
+        "ParaView; 1 shows the field at the corners only.");
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    OutputWriter<dim>::write_pvd(
       const std::string                                 &name,
       const std::vector<std::pair<double, std::string>> &records) const
     {
@@ -82,133 +190,220 @@ namespace psmpm
       DataOutBase::write_pvd_record(out, records);
     }
 
-    void
-    OutputWriter::write_particles(const unsigned int            step,
-                                  const double                  time,
-                                  const Particles::ParticleSet &particles)
-    {
-      using Field = Particles::ParticleSet::Field;
-      std::vector<std::string> names;
-      for (unsigned int f = 0; f < Particles::ParticleSet::n_fields; ++f)
-        names.push_back(
-          Particles::ParticleSet::field_name(static_cast<Field>(f)));
-      names.push_back("cell");
 
-      std::vector<DataOutBase::Patch<0, 2>> patches(particles.size());
+
+    template <int dim>
+    void
+    OutputWriter<dim>::write_particles(
+      const unsigned int                 step,
+      const double                       time,
+      const Particles::ParticleSet<dim> &particles)
+    {
+      std::vector<std::string> names =
+        {"id", "cell", "rank", "mass", "volume", "density"};
+      Ranges             ranges;
+      const unsigned int first_displacement = names.size();
+      add_vector<dim>("displacement", names, ranges);
+      const unsigned int first_velocity = names.size();
+      add_vector<dim>("velocity", names, ranges);
+
+      // The full dim x dim tensor in deal.II's unrolled order, so that
+      // ParaView shows the symmetric stress as a tensor (eigenvalues,
+      // von Mises through the calculator) rather than loose components.
+      const unsigned int first_stress = names.size();
+      for (unsigned int c = 0; c < dim * dim; ++c)
+        {
+          const auto ind = Tensor<2, dim>::unrolled_to_component_indices(c);
+          names.push_back(std::string("stress_") + component_suffix[ind[0]] +
+                          component_suffix[ind[1]]);
+        }
+      ranges.emplace_back(
+        first_stress,
+        first_stress + dim * dim - 1,
+        "stress",
+        DataComponentInterpretation::component_is_part_of_tensor);
+
+      const unsigned int first_state = names.size();
+      const unsigned int n_state     = particles.n_state();
+      for (const auto &name : particles.get_state_names())
+        names.push_back(name);
+
+      const double rank = Utilities::MPI::this_mpi_process(comm);
+      std::vector<DataOutBase::Patch<0, dim>> patches(particles.size());
       for (std::size_t i = 0; i < particles.size(); ++i)
         {
           auto &patch       = patches[i];
           patch.vertices[0] = particles.position[i];
           patch.patch_index = i;
           patch.data.reinit(names.size(), 1);
-          for (unsigned int f = 0; f < Particles::ParticleSet::n_fields; ++f)
-            patch.data(f, 0) = particles.get(i, static_cast<Field>(f));
-          patch.data(names.size() - 1, 0) = particles.cell[i];
+          // VTU stores Float32: ids above 2^24 lose their last digits,
+          // which is acceptable for picking particles in ParaView.
+          patch.data(0, 0) = particles.id[i];
+          patch.data(1, 0) = particles.cell[i];
+          patch.data(2, 0) = rank;
+          patch.data(3, 0) = particles.mass[i];
+          patch.data(4, 0) = particles.volume[i];
+          patch.data(5, 0) = particles.density[i];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              patch.data(first_displacement + d, 0) =
+                particles.displacement[i][d];
+              patch.data(first_velocity + d, 0) = particles.velocity[i][d];
+            }
+          for (unsigned int c = 0; c < dim * dim; ++c)
+            {
+              const auto ind = Tensor<2, dim>::unrolled_to_component_indices(c);
+              patch.data(first_stress + c, 0) =
+                particles.stress[i][ind[0]][ind[1]];
+            }
+          const double *state = particles.state_of(i);
+          for (unsigned int k = 0; k < n_state; ++k)
+            patch.data(first_state + k, 0) = state[k];
         }
-      const auto vec = DataComponentInterpretation::component_is_part_of_vector;
-      const std::vector<
-        std::tuple<unsigned int,
-                   unsigned int,
-                   std::string,
-                   DataComponentInterpretation::DataComponentInterpretation>>
-        ranges = {{static_cast<unsigned int>(Field::displacement_x),
-                   static_cast<unsigned int>(Field::displacement_y),
-                   "displacement",
-                   vec},
-                  {static_cast<unsigned int>(Field::velocity_x),
-                   static_cast<unsigned int>(Field::velocity_y),
-                   "velocity",
-                   vec}};
+
       particle_records.emplace_back(time,
                                     write_pieces(directory,
                                                  "particles",
                                                  step,
                                                  names,
                                                  ranges,
-                                                 &patches,
-                                                 nullptr,
+                                                 patches,
                                                  comm));
       write_pvd("particles", particle_records);
     }
 
+
+
+    template <int dim>
     void
-    OutputWriter::write_grid(
+    OutputWriter<dim>::write_grid(
       const unsigned int               step,
       const double                     time,
-      const DoFHandler<2>             &dof_handler,
-      const Basis::Space              &space,
+      const DoFHandler<dim>           &dof_handler,
+      const Basis::Space<dim>         &space,
       const std::vector<unsigned int> &cell_dofs,
       const std::vector<
-        std::pair<std::string, const std::vector<Tensor<1, 2>> *>>
+        std::pair<std::string, const std::vector<Tensor<1, dim>> *>>
         &vector_fields,
       const std::vector<std::pair<std::string, const std::vector<double> *>>
         &scalar_fields)
     {
       std::vector<std::string> names;
-      std::vector<
-        std::tuple<unsigned int,
-                   unsigned int,
-                   std::string,
-                   DataComponentInterpretation::DataComponentInterpretation>>
-        ranges;
+      Ranges                   ranges;
       for (const auto &f : vector_fields)
-        {
-          ranges.emplace_back(
-            names.size(),
-            names.size() + 1,
-            f.first,
-            DataComponentInterpretation::component_is_part_of_vector);
-          names.push_back(f.first + "_x");
-          names.push_back(f.first + "_y");
-        }
+        add_vector<dim>(f.first, names, ranges);
       for (const auto &f : scalar_fields)
         names.push_back(f.first);
+      // A cell field; VTU patches only carry point data, so it is constant
+      // on the cell's (unshared) points, which ParaView shows as cells.
+      names.push_back("rank");
+      const double rank = Utilities::MPI::this_mpi_process(comm);
 
-      const unsigned int                    n = space.dofs_per_cell();
-      std::vector<double>                   values(n);
-      std::vector<DataOutBase::Patch<2, 2>> patches;
+      const unsigned int                             s = subdivisions;
+      const unsigned int                             n = space.dofs_per_cell();
+      const std::vector<std::array<unsigned int, 3>> triangles =
+        (dim == 2 ? sub_triangles(s) :
+                    std::vector<std::array<unsigned int, 3>>());
+
+      std::vector<DataOutBase::Patch<dim, dim>> patches;
+      std::vector<double>                       values;
+      std::vector<unsigned int>                 cells;
+      // Field values at the lattice points of one cell, point-major.
+      std::vector<double> data;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            const unsigned int       c = cell->active_cell_index();
-            DataOutBase::Patch<2, 2> patch;
-            patch.reference_cell = ReferenceCells::Triangle;
-            patch.n_subdivisions = 1;
-            patch.patch_index    = patches.size();
-            patch.data.reinit(names.size(), 3);
-            for (unsigned int v = 0; v < 3; ++v)
+            Assert(cell->reference_cell() == ReferenceCells::get_simplex<dim>(),
+                   ExcMessage("psmpm: grid output expects simplex cells."));
+            const unsigned int              c = cell->active_cell_index();
+            std::array<Point<dim>, dim + 1> v;
+            for (unsigned int i = 0; i <= dim; ++i)
+              v[i] = cell->vertex(i);
+            const std::vector<Point<dim>> points   = lattice_points<dim>(v, s);
+            const unsigned int            n_points = points.size();
+
+            // One batched (virtual) evaluation per cell.
+            cells.assign(n_points, c);
+            values.resize(n_points * n);
+            space.evaluate(n_points,
+                           cells.data(),
+                           points.data(),
+                           values.data(),
+                           nullptr);
+
+            data.assign(n_points * names.size(), 0.);
+            for (unsigned int q = 0; q < n_points; ++q)
               {
-                patch.vertices[v] = cell->vertex(v);
-                space.evaluate(c, cell->vertex(v), values.data(), nullptr);
-                unsigned int row = 0;
+                const double *phi = values.data() + q * n;
+                double       *row = data.data() + q * names.size();
                 for (const auto &f : vector_fields)
                   {
-                    Tensor<1, 2> s;
+                    Tensor<1, dim> u;
                     for (unsigned int k = 0; k < n; ++k)
-                      s += values[k] * (*f.second)[cell_dofs[c * n + k]];
-                    patch.data(row++, v) = s[0];
-                    patch.data(row++, v) = s[1];
+                      u += phi[k] * (*f.second)[cell_dofs[c * n + k]];
+                    for (unsigned int d = 0; d < dim; ++d)
+                      *row++ = u[d];
                   }
                 for (const auto &f : scalar_fields)
                   {
-                    double s = 0;
+                    double u = 0;
                     for (unsigned int k = 0; k < n; ++k)
-                      s += values[k] * (*f.second)[cell_dofs[c * n + k]];
-                    patch.data(row++, v) = s;
+                      u += phi[k] * (*f.second)[cell_dofs[c * n + k]];
+                    *row++ = u;
                   }
+                *row = rank;
               }
-            patches.push_back(std::move(patch));
+
+            const auto fill = [&](DataOutBase::Patch<dim, dim> &patch,
+                                  const unsigned int            column,
+                                  const unsigned int            q) {
+              for (unsigned int r = 0; r < names.size(); ++r)
+                patch.data(r, column) = data[q * names.size() + r];
+            };
+
+            if constexpr (dim == 1)
+              {
+                // deal.II subdivides line patches itself: s + 1 points.
+                DataOutBase::Patch<dim, dim> patch;
+                patch.reference_cell = ReferenceCells::get_hypercube<dim>();
+                patch.n_subdivisions = s;
+                patch.patch_index    = patches.size();
+                patch.vertices[0]    = v[0];
+                patch.vertices[1]    = v[1];
+                patch.data.reinit(names.size(), n_points);
+                for (unsigned int q = 0; q < n_points; ++q)
+                  fill(patch, q, q);
+                patches.push_back(std::move(patch));
+              }
+            else
+              // Simplex patches with n_subdivisions > 1 are not
+              // implemented in deal.II 9.4 (compute_sizes() asserts
+              // n_subdivisions == 1), so one patch per sub-triangle.
+              for (const auto &t : triangles)
+                {
+                  DataOutBase::Patch<dim, dim> patch;
+                  patch.reference_cell = ReferenceCells::get_simplex<dim>();
+                  patch.n_subdivisions = 1;
+                  patch.patch_index    = patches.size();
+                  patch.data.reinit(names.size(), 3);
+                  for (unsigned int k = 0; k < 3; ++k)
+                    {
+                      patch.vertices[k] = points[t[k]];
+                      fill(patch, k, t[k]);
+                    }
+                  patches.push_back(std::move(patch));
+                }
           }
-      grid_records.emplace_back(time,
-                                write_pieces(directory,
-                                             "grid",
-                                             step,
-                                             names,
-                                             ranges,
-                                             nullptr,
-                                             &patches,
-                                             comm));
+
+      grid_records.emplace_back(
+        time,
+        write_pieces(directory, "grid", step, names, ranges, patches, comm));
       write_pvd("grid", grid_records);
     }
+
+
+
+    template class OutputWriter<1>;
+    template class OutputWriter<2>;
   } // namespace Postprocess
 } // namespace psmpm

@@ -5,6 +5,7 @@
 #define psmpm_postprocess_output_writer_h
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 
@@ -23,34 +24,69 @@ namespace psmpm
 
     /**
      * VTU output that ParaView opens: one piece per rank, a .pvtu per
-     * step and a .pvd series each for particles and grid. Grid fields are
-     * evaluated through the Space at the vertices of every cell, so the
-     * same code serves P1 and Powell-Sabin (piecewise linear display).
+     * step and a .pvd series each for particles ("particles.pvd") and grid
+     * ("grid.pvd") in the output directory.
+     *
+     * Grid fields are evaluated through the Space on a lattice of
+     * `subdivisions` sub-cells per cell edge, so the same code serves P1
+     * and Powell-Sabin, and the quadratic Powell-Sabin fields look smooth
+     * instead of being shown as their linear interpolant at the corners.
+     * deal.II 9.4 does not subdivide simplex patches (only hypercube
+     * ones), so in 2D every sub-triangle is a patch of its own; in 1D a
+     * cell is one line patch with n_subdivisions = subdivisions.
+     *
+     * Collective: every rank of @p comm calls the write functions; rank 0
+     * writes the .pvtu and .pvd records. The directory must exist.
      */
+    template <int dim>
     class OutputWriter
     {
     public:
-      OutputWriter(const std::string &directory, MPI_Comm comm);
+      /// @p subdivisions: sub-cells per cell edge of the grid output (>= 1).
+      OutputWriter(const std::string &directory,
+                   MPI_Comm           comm,
+                   const unsigned int subdivisions);
 
+      /// Declare "Subdivisions" in subsection "Output".
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /**
+       * One point per particle with the fields id, cell, rank, mass,
+       * volume, density, the vectors displacement and velocity, the
+       * Cauchy stress as a (symmetric) tensor and every material state
+       * scalar under its name (particles.get_state_names()).
+       */
       void
-      write_particles(const unsigned int            step,
-                      const double                  time,
-                      const Particles::ParticleSet &particles);
+      write_particles(const unsigned int                 step,
+                      const double                       time,
+                      const Particles::ParticleSet<dim> &particles);
 
-      /// @p fields: name and coefficients (local relevant numbering, with
-      /// @p cell_dofs mapping cell c's k-th function to a coefficient).
+      /**
+       * The locally owned cells of @p dof_handler with the given fields:
+       * name and coefficients (locally relevant numbering, with
+       * @p cell_dofs mapping cell c's k-th function of @p space to
+       * a coefficient: cell_dofs[c * space.dofs_per_cell() + k]). A
+       * "rank" field holds the MPI rank that owns each cell.
+       */
       void
       write_grid(
         const unsigned int               step,
         const double                     time,
-        const DoFHandler<2>             &dof_handler,
-        const Basis::Space              &space,
+        const DoFHandler<dim>           &dof_handler,
+        const Basis::Space<dim>         &space,
         const std::vector<unsigned int> &cell_dofs,
         const std::vector<
-          std::pair<std::string, const std::vector<Tensor<1, 2>> *>>
+          std::pair<std::string, const std::vector<Tensor<1, dim>> *>>
           &vector_fields,
         const std::vector<std::pair<std::string, const std::vector<double> *>>
           &scalar_fields);
+
+      unsigned int
+      n_subdivisions() const
+      {
+        return subdivisions;
+      }
 
     private:
       void
@@ -60,6 +96,7 @@ namespace psmpm
 
       std::string                                 directory;
       MPI_Comm                                    comm;
+      unsigned int                                subdivisions;
       std::vector<std::pair<double, std::string>> particle_records;
       std::vector<std::pair<double, std::string>> grid_records;
     };
