@@ -6,89 +6,169 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <string>
 
 namespace psmpm
 {
   namespace Mesh
   {
+    namespace
+    {
+      /// Height of the triangle over the edge opposite vertex k.
+      double
+      height(const std::array<Point<2>, 3> &v,
+             const unsigned int             k,
+             const double                   area)
+      {
+        return 2 * area / v[(k + 1) % 3].distance(v[(k + 2) % 3]);
+      }
+
+      /// A line's "height" over either end is its length.
+      double
+      height(const std::array<Point<1>, 2> &,
+             const unsigned int,
+             const double length)
+      {
+        return length;
+      }
+
+      template <int dim>
+      std::string
+      orientation_error(const unsigned int cell)
+      {
+        return "Cell " + std::to_string(cell) +
+               (dim == 2 ? " has non-positive area (clockwise or "
+                           "degenerate triangle)." :
+                           " has non-positive length (reversed or "
+                           "degenerate line).");
+      }
+    } // namespace
+
+
+
+    template <int dim>
     void
-    CellLocator::reinit(const Triangulation<2> &tria)
+    CellLocator<dim>::reinit(const Triangulation<dim> &tria)
+    {
+      set_up_search(set_up_cells(tria));
+    }
+
+
+
+    template <int dim>
+    std::vector<BoundingBox<dim>>
+    CellLocator<dim>::set_up_cells(const Triangulation<dim> &tria)
     {
       const unsigned int n = tria.n_active_cells();
       maps.resize(n);
-      neighbors.assign(n, {{invalid, invalid, invalid}});
+      std::array<unsigned int, dim + 1> none;
+      none.fill(invalid);
+      neighbors.assign(n, none);
       min_height = std::numeric_limits<double>::max();
 
-      std::map<std::pair<unsigned int, unsigned int>,
+      // Face (sorted vertex indices) -> (cell, local vertex opposite it).
+      std::map<std::array<unsigned int, dim>,
                std::pair<unsigned int, unsigned int>>
-                                  edge_owner; // edge -> (cell, local vertex)
-      std::vector<BoundingBox<2>> boxes(n);
+                                    face_owner;
+      std::vector<BoundingBox<dim>> boxes(n);
       for (const auto &cell : tria.active_cell_iterators())
         {
-          const unsigned int            c = cell->active_cell_index();
-          const std::array<Point<2>, 3> v{
-            {cell->vertex(0), cell->vertex(1), cell->vertex(2)}};
-          const double area = signed_area(v);
-          AssertThrow(area > 0,
-                      ExcMessage("Cell " + std::to_string(c) +
-                                 " has non-positive area (clockwise or "
-                                 "degenerate triangle)."));
+          const unsigned int              c = cell->active_cell_index();
+          std::array<Point<dim>, dim + 1> v;
+          for (unsigned int k = 0; k <= dim; ++k)
+            v[k] = cell->vertex(k);
+          const double measure = signed_measure(v);
+          AssertThrow(measure > 0, ExcMessage(orientation_error<dim>(c)));
           maps[c] = barycentric_map(v);
-          for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int k = 0; k <= dim; ++k)
             {
-              min_height =
-                std::min(min_height,
-                         2 * area / v[(k + 1) % 3].distance(v[(k + 2) % 3]));
-              unsigned int a = cell->vertex_index((k + 1) % 3),
-                           b = cell->vertex_index((k + 2) % 3);
-              const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-              const auto it  = edge_owner.find(key);
-              if (it == edge_owner.end())
-                edge_owner[key] = {c, k};
+              min_height = std::min(min_height, height(v, k, measure));
+              std::array<unsigned int, dim> key;
+              for (unsigned int j = 0; j < dim; ++j)
+                key[j] = cell->vertex_index((k + 1 + j) % (dim + 1));
+              std::sort(key.begin(), key.end());
+              const auto it = face_owner.find(key);
+              if (it == face_owner.end())
+                face_owner[key] = {c, k};
               else
                 {
                   neighbors[c][k] = it->second.first;
                   neighbors[it->second.first][it->second.second] = c;
                 }
             }
-          boxes[c] = BoundingBox<2>(std::vector<Point<2>>(v.begin(), v.end()));
+          boxes[c] =
+            BoundingBox<dim>(std::vector<Point<dim>>(v.begin(), v.end()));
         }
+      return boxes;
+    }
 
-      // Bucket grid with about one cell per bucket.
-      box = boxes[0];
+
+
+    template <int dim>
+    void
+    CellLocator<dim>::set_up_search(const std::vector<BoundingBox<dim>> &boxes)
+    {
+      const unsigned int n = boxes.size();
+      box                  = boxes[0];
       for (const auto &b : boxes)
         box.merge_with(b);
-      box.extend(1e-10 * box.side_length(0) + 1e-10 * box.side_length(1));
-      const double aspect = box.side_length(0) / box.side_length(1);
-      const double nb     = std::sqrt(static_cast<double>(n));
-      n_buckets[0] =
-        std::max(1u, static_cast<unsigned int>(nb * std::sqrt(aspect)));
-      n_buckets[1] =
-        std::max(1u, static_cast<unsigned int>(nb / std::sqrt(aspect)));
-      std::vector<std::vector<unsigned int>> buckets(n_buckets[0] *
-                                                     n_buckets[1]);
-      for (unsigned int c = 0; c < n; ++c)
+      if constexpr (dim == 1)
         {
-          const auto lo = bucket_of(boxes[c].get_boundary_points().first);
-          const auto hi = bucket_of(boxes[c].get_boundary_points().second);
-          for (unsigned int j = lo[1]; j <= hi[1]; ++j)
-            for (unsigned int i = lo[0]; i <= hi[0]; ++i)
-              buckets[j * n_buckets[0] + i].push_back(c);
+          box.extend(1e-10 * box.side_length(0));
+          // A line mesh needs no buckets: its cells sorted by their left
+          // ends make a binary search, however graded the mesh.
+          bucket_cells.resize(n);
+          std::iota(bucket_cells.begin(), bucket_cells.end(), 0u);
+          std::stable_sort(bucket_cells.begin(),
+                           bucket_cells.end(),
+                           [&boxes](const unsigned int a,
+                                    const unsigned int b) {
+                             return boxes[a].lower_bound(0) <
+                                    boxes[b].lower_bound(0);
+                           });
+          lower_ends.resize(n);
+          for (unsigned int i = 0; i < n; ++i)
+            lower_ends[i] = boxes[bucket_cells[i]].lower_bound(0);
         }
-      bucket_start.assign(1, 0);
-      bucket_cells.clear();
-      for (const auto &b : buckets)
+      else
         {
-          bucket_cells.insert(bucket_cells.end(), b.begin(), b.end());
-          bucket_start.push_back(bucket_cells.size());
+          // Bucket grid with about one cell per bucket.
+          box.extend(1e-10 * box.side_length(0) + 1e-10 * box.side_length(1));
+          const double aspect = box.side_length(0) / box.side_length(1);
+          const double nb     = std::sqrt(static_cast<double>(n));
+          n_buckets[0] =
+            std::max(1u, static_cast<unsigned int>(nb * std::sqrt(aspect)));
+          n_buckets[1] =
+            std::max(1u, static_cast<unsigned int>(nb / std::sqrt(aspect)));
+          std::vector<std::vector<unsigned int>> buckets(n_buckets[0] *
+                                                         n_buckets[1]);
+          for (unsigned int c = 0; c < n; ++c)
+            {
+              const auto lo = bucket_of(boxes[c].get_boundary_points().first);
+              const auto hi = bucket_of(boxes[c].get_boundary_points().second);
+              for (unsigned int j = lo[1]; j <= hi[1]; ++j)
+                for (unsigned int i = lo[0]; i <= hi[0]; ++i)
+                  buckets[j * n_buckets[0] + i].push_back(c);
+            }
+          bucket_start.assign(1, 0);
+          bucket_cells.clear();
+          for (const auto &b : buckets)
+            {
+              bucket_cells.insert(bucket_cells.end(), b.begin(), b.end());
+              bucket_start.push_back(bucket_cells.size());
+            }
         }
     }
 
-    std::array<unsigned int, 2>
-    CellLocator::bucket_of(const Point<2> &p) const
+
+
+    template <int dim>
+    std::array<unsigned int, dim>
+    CellLocator<dim>::bucket_of(const Point<dim> &p) const
     {
-      std::array<unsigned int, 2> ij;
-      for (unsigned int d = 0; d < 2; ++d)
+      std::array<unsigned int, dim> ij;
+      for (unsigned int d = 0; d < dim; ++d)
         {
           const double s = (p[d] - box.lower_bound(d)) / box.side_length(d);
           const int    i = static_cast<int>(std::floor(s * n_buckets[d]));
@@ -98,33 +178,63 @@ namespace psmpm
       return ij;
     }
 
+
+
+    template <int dim>
     unsigned int
-    CellLocator::locate(const Point<2> &p) const
+    CellLocator<dim>::search(const Point<dim> &p) const
+    {
+      if constexpr (dim == 1)
+        {
+          // The last cell starting at or left of p holds it, unless p is
+          // within round-off left of the next cell's start.
+          const std::size_t j =
+            std::upper_bound(lower_ends.begin(), lower_ends.end(), p[0]) -
+            lower_ends.begin();
+          if (j > 0 && contains(bucket_cells[j - 1], p))
+            return bucket_cells[j - 1];
+          if (j < bucket_cells.size() && contains(bucket_cells[j], p))
+            return bucket_cells[j];
+          return invalid;
+        }
+      else
+        {
+          const auto         ij = bucket_of(p);
+          const unsigned int b  = ij[1] * n_buckets[0] + ij[0];
+          for (unsigned int i = bucket_start[b]; i < bucket_start[b + 1]; ++i)
+            if (contains(bucket_cells[i], p))
+              return bucket_cells[i];
+          return invalid;
+        }
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    CellLocator<dim>::locate(const Point<dim> &p) const
     {
       if (!box.point_inside(p))
         return invalid;
-      const auto         ij = bucket_of(p);
-      const unsigned int b  = ij[1] * n_buckets[0] + ij[0];
-      for (unsigned int i = bucket_start[b]; i < bucket_start[b + 1]; ++i)
-        if (contains(bucket_cells[i], p))
-          return bucket_cells[i];
-      return invalid;
+      return search(p);
     }
 
+
+
+    template <int dim>
     unsigned int
-    CellLocator::locate(const Point<2> &p, const unsigned int hint) const
+    CellLocator<dim>::locate(const Point<dim> &p, const unsigned int hint) const
     {
       unsigned int cell = hint;
       // A walk in a convex mesh needs at most as many steps as cells it
-      // crosses; bound it and fall back to the bucket search.
+      // crosses; bound it and fall back to the search from scratch.
       for (unsigned int step = 0; step < 64; ++step)
         {
           const auto   l = maps[cell](p);
           unsigned int k = 0;
-          if (l[1] < l[k])
-            k = 1;
-          if (l[2] < l[k])
-            k = 2;
+          for (unsigned int j = 1; j <= dim; ++j)
+            if (l[j] < l[k])
+              k = j;
           if (l[k] >= -tolerance)
             return cell;
           const unsigned int next = neighbors[cell][k];
@@ -134,5 +244,10 @@ namespace psmpm
         }
       return locate(p);
     }
+
+
+
+    template class CellLocator<1>;
+    template class CellLocator<2>;
   } // namespace Mesh
 } // namespace psmpm

@@ -2,6 +2,7 @@
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria_description.h>
 
@@ -15,8 +16,9 @@ namespace psmpm
 {
   namespace Mesh
   {
+    template <int dim>
     void
-    MeshGenerator::declare_parameters(ParameterHandler &prm)
+    MeshGenerator<dim>::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
       {
@@ -56,8 +58,9 @@ namespace psmpm
       prm.leave_subsection();
     }
 
+    template <int dim>
     void
-    MeshGenerator::parse_parameters(ParameterHandler &prm)
+    MeshGenerator<dim>::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
       length = prm.get_double("Length");
@@ -73,27 +76,53 @@ namespace psmpm
       file                = prm.get("File");
       prm.leave_subsection();
 
-      AssertThrow(type == Type::gmsh || (length > 0 && height > 0),
-                  ExcMessage("Geometry/Length and Geometry/Height must be "
-                             "positive, got " +
-                             std::to_string(length) + " and " +
-                             std::to_string(height) + "."));
-      if (type == Type::gmsh)
+      if constexpr (dim == 1)
         {
-          AssertThrow(!file.empty(),
-                      ExcMessage("Mesh/File must name a .msh file when "
-                                 "Mesh/Type = gmsh."));
-          std::ifstream in(file);
-          AssertThrow(in.good(),
-                      ExcMessage("Mesh/File = " + file +
-                                 ": cannot open the mesh file."));
+          // Gmsh meshes are read as triangles; a 1D mesh is always the
+          // uniform subdivision of [0, Length].
+          AssertThrow(type != Type::gmsh,
+                      ExcMessage("Mesh/Type = gmsh is not available in 1D: "
+                                 "the mesh is Mesh/Blocks x equal elements "
+                                 "on [0, Geometry/Length]."));
+          AssertThrow(length > 0,
+                      ExcMessage("Geometry/Length must be positive, got " +
+                                 std::to_string(length) + "."));
+        }
+      else
+        {
+          AssertThrow(type == Type::gmsh || (length > 0 && height > 0),
+                      ExcMessage("Geometry/Length and Geometry/Height must be "
+                                 "positive, got " +
+                                 std::to_string(length) + " and " +
+                                 std::to_string(height) + "."));
+          if (type == Type::gmsh)
+            {
+              AssertThrow(!file.empty(),
+                          ExcMessage("Mesh/File must name a .msh file when "
+                                     "Mesh/Type = gmsh."));
+              std::ifstream in(file);
+              AssertThrow(in.good(),
+                          ExcMessage("Mesh/File = " + file +
+                                     ": cannot open the mesh file."));
+            }
         }
     }
 
+    template <int dim>
     void
-    MeshGenerator::create(Triangulation<2> &tria) const
+    MeshGenerator<dim>::create(Triangulation<dim> &tria) const
     {
-      if (type == Type::gmsh)
+      if constexpr (dim == 1)
+        {
+          const std::vector<unsigned int> repetitions{blocks_x};
+          GridGenerator::subdivided_hyper_rectangle(tria,
+                                                    repetitions,
+                                                    Point<1>(0),
+                                                    Point<1>(length),
+                                                    true);
+          names = {{"left", 0}, {"right", 1}};
+        }
+      else if (type == Type::gmsh)
         names = read_gmsh(tria, file);
       else
         {
@@ -107,14 +136,16 @@ namespace psmpm
         }
     }
 
+    template <int dim>
     const std::map<std::string, types::boundary_id> &
-    MeshGenerator::boundary_names() const
+    MeshGenerator<dim>::boundary_names() const
     {
       return names;
     }
 
+    template <int dim>
     types::boundary_id
-    MeshGenerator::boundary_id(const std::string &name) const
+    MeshGenerator<dim>::boundary_id(const std::string &name) const
     {
       const auto it = names.find(name);
       if (it != names.end())
@@ -128,13 +159,14 @@ namespace psmpm
       return numbers::invalid_boundary_id;
     }
 
+    template <int dim>
     void
-    MeshGenerator::make_blocks(Triangulation<2>  &tria,
-                               const Point<2>    &lower,
-                               const Point<2>    &upper,
-                               const unsigned int nx,
-                               const unsigned int ny,
-                               const Type         type)
+    MeshGenerator<dim>::make_blocks(Triangulation<2>  &tria,
+                                    const Point<2>    &lower,
+                                    const Point<2>    &upper,
+                                    const unsigned int nx,
+                                    const unsigned int ny,
+                                    const Type         type)
     {
       Assert(type != Type::gmsh, ExcInternalError());
       const double hx = (upper[0] - lower[0]) / nx;
@@ -271,9 +303,10 @@ namespace psmpm
       }
     } // namespace
 
+    template <int dim>
     std::map<std::string, types::boundary_id>
-    MeshGenerator::read_gmsh(Triangulation<2>  &tria,
-                             const std::string &filename)
+    MeshGenerator<dim>::read_gmsh(Triangulation<2>  &tria,
+                                  const std::string &filename)
     {
       std::ifstream in(filename);
       AssertThrow(in.good(),
@@ -291,12 +324,12 @@ namespace psmpm
               in >> n;
               for (unsigned int i = 0; i < n && in; ++i)
                 {
-                  int         dim = 0, tag = 0;
+                  int         entity_dim = 0, tag = 0;
                   std::string rest;
-                  in >> dim >> tag;
+                  in >> entity_dim >> tag;
                   std::getline(in, rest);
                   const auto a = rest.find('"'), b = rest.rfind('"');
-                  if (dim == 1 && a != std::string::npos && b > a)
+                  if (entity_dim == 1 && a != std::string::npos && b > a)
                     physical_names[rest.substr(a + 1, b - a - 1)] = tag;
                 }
               break;
@@ -335,5 +368,10 @@ namespace psmpm
         }
       return physical_names;
     }
+
+
+
+    template class MeshGenerator<1>;
+    template class MeshGenerator<2>;
   } // namespace Mesh
 } // namespace psmpm

@@ -9,8 +9,131 @@ namespace psmpm
 {
   namespace Particles
   {
+    namespace
+    {
+      /// 1D: per_block_x particles at the centres of equal sub-intervals
+      /// of every element (= block), numbered left to right.
+      template <typename InRegion>
+      void
+      generate_lines(const ParticleGenerator<1>              &generator,
+                     const Mesh::MeshGenerator<1>            &mesh,
+                     const Mesh::CellLocator<1>              &locator,
+                     const double                             density,
+                     const std::function<bool(unsigned int)> &is_owned,
+                     const InRegion                          &in_region,
+                     ParticleSet<1>                          &particles)
+      {
+        const unsigned int n      = generator.per_block_x;
+        const double       h      = mesh.length / mesh.blocks_x;
+        const double       volume = h / n;
+        std::uint64_t      id     = 0;
+        unsigned int       hint   = 0;
+        for (unsigned int b = 0; b < mesh.blocks_x; ++b)
+          for (unsigned int i = 0; i < n; ++i, ++id)
+            {
+              // The same x as the 2D block layout with these blocks.
+              const Point<1> x(h * (b + (i + 0.5) / n));
+              if (!in_region(x))
+                continue;
+              const unsigned int c = locator.locate(x, hint);
+              AssertThrow(c != Mesh::CellLocator<1>::invalid,
+                          ExcInternalError());
+              hint = c;
+              if (is_owned(c))
+                particles.add(id, c, x, volume, density);
+            }
+      }
+
+      /// 2D block meshes: a per_block_x by per_block_y sub-grid of every
+      /// block, numbered block by block.
+      template <typename InRegion>
+      void
+      generate_blocks(const ParticleGenerator<2>              &generator,
+                      const Mesh::MeshGenerator<2>            &mesh,
+                      const Mesh::CellLocator<2>              &locator,
+                      const double                             density,
+                      const std::function<bool(unsigned int)> &is_owned,
+                      const InRegion                          &in_region,
+                      ParticleSet<2>                          &particles)
+      {
+        const unsigned int per_block_x = generator.per_block_x;
+        const unsigned int per_block_y = generator.per_block_y;
+        const double       hx          = mesh.length / mesh.blocks_x;
+        const double       hy          = mesh.height / mesh.blocks_y;
+        const double       volume      = hx * hy / (per_block_x * per_block_y);
+        std::uint64_t      id          = 0;
+        unsigned int       hint        = 0;
+        for (unsigned int bj = 0; bj < mesh.blocks_y; ++bj)
+          for (unsigned int bi = 0; bi < mesh.blocks_x; ++bi)
+            for (unsigned int j = 0; j < per_block_y; ++j)
+              for (unsigned int i = 0; i < per_block_x; ++i, ++id)
+                {
+                  const Point<2> x(hx * (bi + (i + 0.5) / per_block_x),
+                                   hy * (bj + (j + 0.5) / per_block_y));
+                  if (!in_region(x))
+                    continue;
+                  const unsigned int c = locator.locate(x, hint);
+                  AssertThrow(c != Mesh::CellLocator<2>::invalid,
+                              ExcInternalError());
+                  hint = c;
+                  if (is_owned(c))
+                    particles.add(id, c, x, volume, density);
+                }
+      }
+
+      /// 2D Gmsh meshes: every triangle split into per_cell^2 similar
+      /// triangles, a particle at each centroid.
+      template <typename InRegion>
+      void
+      generate_per_cell(const ParticleGenerator<2>              &generator,
+                        const Triangulation<2>                  &tria,
+                        const double                             density,
+                        const std::function<bool(unsigned int)> &is_owned,
+                        const InRegion                          &in_region,
+                        ParticleSet<2>                          &particles)
+      {
+        const unsigned int k     = generator.per_cell;
+        const double       total = double(tria.n_active_cells()) * k * k;
+        AssertThrow(total <= generator.max_particles,
+                    ExcMessage("Particles/Per cell: " + std::to_string(total) +
+                               " particles exceed Particles/Maximum "
+                               "number = " +
+                               std::to_string(generator.max_particles) + "."));
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            const unsigned int c      = cell->active_cell_index();
+            const Point<2>     v0     = cell->vertex(0);
+            const Tensor<1, 2> e1     = (cell->vertex(1) - v0) / k;
+            const Tensor<1, 2> e2     = (cell->vertex(2) - v0) / k;
+            const double       volume = cell->measure() / (k * k);
+            std::uint64_t      id     = std::uint64_t(c) * k * k;
+            // k^2 sub-triangles: upright (i, j) and inverted ones.
+            for (unsigned int j = 0; j < k; ++j)
+              for (unsigned int i = 0; i + j < k; ++i)
+                {
+                  const Point<2> up =
+                    v0 + (i + 1. / 3) * e1 + (j + 1. / 3) * e2;
+                  if (is_owned(c) && in_region(up))
+                    particles.add(id, c, up, volume, density);
+                  ++id;
+                  if (i + j + 1 < k)
+                    {
+                      const Point<2> down =
+                        v0 + (i + 2. / 3) * e1 + (j + 2. / 3) * e2;
+                      if (is_owned(c) && in_region(down))
+                        particles.add(id, c, down, volume, density);
+                      ++id;
+                    }
+                }
+          }
+      }
+    } // namespace
+
+
+
+    template <int dim>
     void
-    ParticleGenerator::declare_parameters(ParameterHandler &prm)
+    ParticleGenerator<dim>::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Particles");
       prm.declare_entry("Per block x",
@@ -39,8 +162,11 @@ namespace psmpm
       prm.leave_subsection();
     }
 
+
+
+    template <int dim>
     void
-    ParticleGenerator::parse_parameters(ParameterHandler &prm)
+    ParticleGenerator<dim>::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Particles");
       per_block_x = prm.get_integer("Per block x");
@@ -50,110 +176,118 @@ namespace psmpm
         Utilities::split_string_list(prm.get("Region")));
       max_particles = prm.get_double("Maximum number");
       prm.leave_subsection();
-      AssertThrow(region.empty() || region.size() == 4,
-                  ExcMessage("Particles/Region must be empty or x0, y0, x1, "
-                             "y1, got " +
-                             std::to_string(region.size()) + " numbers."));
-      AssertThrow(region.empty() ||
-                    (region[2] > region[0] && region[3] > region[1]),
-                  ExcMessage("Particles/Region: need x0 < x1 and y0 < y1."));
-    }
-
-    void
-    ParticleGenerator::check_count(const Mesh::MeshGenerator &mesh) const
-    {
-      if (mesh.type == Mesh::MeshGenerator::Type::gmsh)
-        return; // checked against the cell count once the mesh is read
-      const double total =
-        double(mesh.blocks_x) * mesh.blocks_y * per_block_x * per_block_y;
-      AssertThrow(total <= max_particles,
-                  ExcMessage(
-                    "Mesh/Blocks x, Blocks y and Particles/Per block "
-                    "x, Per block y ask for " +
-                    std::to_string(total) +
-                    " particles, more than Particles/Maximum number = " +
-                    std::to_string(max_particles) + "."));
-    }
-
-    bool
-    ParticleGenerator::in_region(const Point<2> &p) const
-    {
-      return region.empty() || (p[0] >= region[0] && p[0] <= region[2] &&
-                                p[1] >= region[1] && p[1] <= region[3]);
-    }
-
-    void
-    ParticleGenerator::generate(
-      const Mesh::MeshGenerator               &mesh,
-      const Triangulation<2>                  &tria,
-      const Mesh::CellLocator                 &locator,
-      const double                             density,
-      const std::function<bool(unsigned int)> &is_owned,
-      ParticleSet                             &particles) const
-    {
-      if (mesh.type != Mesh::MeshGenerator::Type::gmsh)
+      if constexpr (dim == 1)
         {
-          check_count(mesh);
-          const double  hx     = mesh.length / mesh.blocks_x;
-          const double  hy     = mesh.height / mesh.blocks_y;
-          const double  volume = hx * hy / (per_block_x * per_block_y);
-          std::uint64_t id     = 0;
-          unsigned int  hint   = 0;
-          for (unsigned int bj = 0; bj < mesh.blocks_y; ++bj)
-            for (unsigned int bi = 0; bi < mesh.blocks_x; ++bi)
-              for (unsigned int j = 0; j < per_block_y; ++j)
-                for (unsigned int i = 0; i < per_block_x; ++i, ++id)
-                  {
-                    const Point<2> x(hx * (bi + (i + 0.5) / per_block_x),
-                                     hy * (bj + (j + 0.5) / per_block_y));
-                    if (!in_region(x))
-                      continue;
-                    const unsigned int c = locator.locate(x, hint);
-                    AssertThrow(c != Mesh::CellLocator::invalid,
-                                ExcInternalError());
-                    hint = c;
-                    if (is_owned(c))
-                      particles.add(id, c, x, volume, density);
-                  }
+          AssertThrow(region.empty() || region.size() == 2,
+                      ExcMessage("Particles/Region must be empty or x0, x1 "
+                                 "in 1D, got " +
+                                 std::to_string(region.size()) + " numbers."));
+          AssertThrow(region.empty() || region[1] > region[0],
+                      ExcMessage("Particles/Region: need x0 < x1."));
         }
       else
         {
-          const unsigned int k     = per_cell;
-          const double       total = double(tria.n_active_cells()) * k * k;
-          AssertThrow(total <= max_particles,
-                      ExcMessage(
-                        "Particles/Per cell: " + std::to_string(total) +
-                        " particles exceed Particles/Maximum "
-                        "number = " +
-                        std::to_string(max_particles) + "."));
-          for (const auto &cell : tria.active_cell_iterators())
-            {
-              const unsigned int c      = cell->active_cell_index();
-              const Point<2>     v0     = cell->vertex(0);
-              const Tensor<1, 2> e1     = (cell->vertex(1) - v0) / k;
-              const Tensor<1, 2> e2     = (cell->vertex(2) - v0) / k;
-              const double       volume = cell->measure() / (k * k);
-              std::uint64_t      id     = std::uint64_t(c) * k * k;
-              // k^2 sub-triangles: upright (i, j) and inverted ones.
-              for (unsigned int j = 0; j < k; ++j)
-                for (unsigned int i = 0; i + j < k; ++i)
-                  {
-                    const Point<2> up =
-                      v0 + (i + 1. / 3) * e1 + (j + 1. / 3) * e2;
-                    if (is_owned(c) && in_region(up))
-                      particles.add(id, c, up, volume, density);
-                    ++id;
-                    if (i + j + 1 < k)
-                      {
-                        const Point<2> down =
-                          v0 + (i + 2. / 3) * e1 + (j + 2. / 3) * e2;
-                        if (is_owned(c) && in_region(down))
-                          particles.add(id, c, down, volume, density);
-                        ++id;
-                      }
-                  }
-            }
+          AssertThrow(region.empty() || region.size() == 4,
+                      ExcMessage("Particles/Region must be empty or x0, y0, "
+                                 "x1, y1, got " +
+                                 std::to_string(region.size()) + " numbers."));
+          AssertThrow(
+            region.empty() || (region[2] > region[0] && region[3] > region[1]),
+            ExcMessage("Particles/Region: need x0 < x1 and y0 < y1."));
         }
     }
+
+
+
+    template <int dim>
+    void
+    ParticleGenerator<dim>::check_count(
+      const Mesh::MeshGenerator<dim> &mesh) const
+    {
+      if constexpr (dim == 1)
+        {
+          const double total = double(mesh.blocks_x) * per_block_x;
+          AssertThrow(total <= max_particles,
+                      ExcMessage(
+                        "Mesh/Blocks x and Particles/Per block x ask for " +
+                        std::to_string(total) +
+                        " particles, more than Particles/Maximum number = " +
+                        std::to_string(max_particles) + "."));
+        }
+      else
+        {
+          if (mesh.type == Mesh::MeshGenerator<dim>::Type::gmsh)
+            return; // checked against the cell count once the mesh is read
+          const double total =
+            double(mesh.blocks_x) * mesh.blocks_y * per_block_x * per_block_y;
+          AssertThrow(total <= max_particles,
+                      ExcMessage(
+                        "Mesh/Blocks x, Blocks y and Particles/Per block "
+                        "x, Per block y ask for " +
+                        std::to_string(total) +
+                        " particles, more than Particles/Maximum number = " +
+                        std::to_string(max_particles) + "."));
+        }
+    }
+
+
+
+    template <int dim>
+    bool
+    ParticleGenerator<dim>::in_region(const Point<dim> &p) const
+    {
+      if (region.empty())
+        return true;
+      // region = {lower corner, upper corner}.
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!(p[d] >= region[d] && p[d] <= region[dim + d]))
+          return false;
+      return true;
+    }
+
+
+
+    template <int dim>
+    void
+    ParticleGenerator<dim>::generate(
+      const Mesh::MeshGenerator<dim>          &mesh,
+      const Triangulation<dim>                &tria,
+      const Mesh::CellLocator<dim>            &locator,
+      const double                             density,
+      const std::function<bool(unsigned int)> &is_owned,
+      ParticleSet<dim>                        &particles) const
+    {
+      const auto inside = [this](const Point<dim> &p) { return in_region(p); };
+      if constexpr (dim == 1)
+        {
+          (void)tria;
+          check_count(mesh);
+          generate_lines(*this,
+                         mesh,
+                         locator,
+                         density,
+                         is_owned,
+                         inside,
+                         particles);
+        }
+      else if (mesh.type != Mesh::MeshGenerator<dim>::Type::gmsh)
+        {
+          check_count(mesh);
+          generate_blocks(*this,
+                          mesh,
+                          locator,
+                          density,
+                          is_owned,
+                          inside,
+                          particles);
+        }
+      else
+        generate_per_cell(*this, tria, density, is_owned, inside, particles);
+    }
+
+
+
+    template class ParticleGenerator<1>;
+    template class ParticleGenerator<2>;
   } // namespace Particles
 } // namespace psmpm

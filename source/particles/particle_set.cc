@@ -5,47 +5,66 @@
 
 #include <psmpm/particles/particle_set.h>
 
+#include <algorithm>
 #include <numeric>
 
 namespace psmpm
 {
   namespace Particles
   {
-    std::string
-    ParticleSet::field_name(const Field f)
+    namespace
     {
-      static const char *names[] = {"id",
-                                    "mass",
-                                    "volume",
-                                    "density",
-                                    "position_x",
-                                    "position_y",
-                                    "initial_position_x",
-                                    "initial_position_y",
-                                    "displacement_x",
-                                    "displacement_y",
-                                    "velocity_x",
-                                    "velocity_y",
-                                    "traction_x",
-                                    "traction_y",
-                                    "stress_xx",
-                                    "stress_yy",
-                                    "stress_xy",
-                                    "stress_zz",
-                                    "strain_xx",
-                                    "strain_yy",
-                                    "strain_xy"};
-      static_assert(sizeof(names) / sizeof(names[0]) == n_fields,
-                    "one name per field");
-      return names[static_cast<unsigned int>(f)];
+      /**
+       * Apply @p f to every per-particle array (one entry per particle).
+       * The state block (n_state() entries per particle) is not among
+       * them: callers move it with its stride.
+       */
+      template <int dim, typename F>
+      void
+      for_each_array(ParticleSet<dim> &particles, F &&f)
+      {
+        f(particles.id);
+        f(particles.cell);
+        f(particles.mass);
+        f(particles.volume);
+        f(particles.density);
+        f(particles.position);
+        f(particles.initial_position);
+        f(particles.displacement);
+        f(particles.velocity);
+        f(particles.stress);
+      }
+
+      constexpr unsigned int
+      n_stress_components(const unsigned int dim)
+      {
+        return dim * (dim + 1) / 2;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    ParticleSet<dim>::set_state_names(const std::vector<std::string> &names)
+    {
+      // The state block's stride is n_state(): changing it would scramble
+      // the state of particles already stored.
+      AssertThrow(size() == 0 || names.size() == state_names.size(),
+                  ExcMessage("ParticleSet: the number of state scalars "
+                             "cannot change once particles exist."));
+      state_names = names;
     }
 
+
+
+    template <int dim>
     void
-    ParticleSet::add(const std::uint64_t new_id,
-                     const unsigned int  new_cell,
-                     const Point<2>     &x,
-                     const double        new_volume,
-                     const double        new_density)
+    ParticleSet<dim>::add(const std::uint64_t new_id,
+                          const unsigned int  new_cell,
+                          const Point<dim>   &x,
+                          const double        new_volume,
+                          const double        new_density)
     {
       id.push_back(new_id);
       cell.push_back(new_cell);
@@ -56,181 +75,103 @@ namespace psmpm
       initial_position.push_back(x);
       displacement.emplace_back();
       velocity.emplace_back();
-      traction.emplace_back();
       stress.emplace_back();
-      stress_zz.push_back(0);
-      strain.emplace_back();
+      state.resize(state.size() + n_state(), 0.);
     }
 
-    double
-    ParticleSet::get(const std::size_t i, const Field f) const
+
+
+    template <int dim>
+    unsigned int
+    ParticleSet<dim>::n_packed() const
     {
-      switch (f)
+      static_assert(SymmetricTensor<2, dim>::n_independent_components ==
+                      n_stress_components(dim),
+                    "stress is packed by its independent components");
+      // id, mass, volume, density; four vectors; stress; state.
+      return 4 + 4 * dim + n_stress_components(dim) + n_state();
+    }
+
+
+
+    template <int dim>
+    void
+    ParticleSet<dim>::pack(const std::size_t    i,
+                           std::vector<double> &buffer) const
+    {
+      buffer.push_back(static_cast<double>(id[i]));
+      buffer.push_back(mass[i]);
+      buffer.push_back(volume[i]);
+      buffer.push_back(density[i]);
+      for (unsigned int d = 0; d < dim; ++d)
+        buffer.push_back(position[i][d]);
+      for (unsigned int d = 0; d < dim; ++d)
+        buffer.push_back(initial_position[i][d]);
+      for (unsigned int d = 0; d < dim; ++d)
+        buffer.push_back(displacement[i][d]);
+      for (unsigned int d = 0; d < dim; ++d)
+        buffer.push_back(velocity[i][d]);
+      for (unsigned int k = 0; k < n_stress_components(dim); ++k)
+        buffer.push_back(stress[i].access_raw_entry(k));
+      buffer.insert(buffer.end(), state_of(i), state_of(i) + n_state());
+    }
+
+
+
+    template <int dim>
+    void
+    ParticleSet<dim>::unpack(const std::vector<double> &buffer)
+    {
+      const unsigned int n = n_packed();
+      AssertThrow(buffer.size() % n == 0, ExcInternalError());
+      for (std::size_t start = 0; start < buffer.size(); start += n)
         {
-          case Field::id:
-            return static_cast<double>(id[i]);
-          case Field::mass:
-            return mass[i];
-          case Field::volume:
-            return volume[i];
-          case Field::density:
-            return density[i];
-          case Field::position_x:
-            return position[i][0];
-          case Field::position_y:
-            return position[i][1];
-          case Field::initial_position_x:
-            return initial_position[i][0];
-          case Field::initial_position_y:
-            return initial_position[i][1];
-          case Field::displacement_x:
-            return displacement[i][0];
-          case Field::displacement_y:
-            return displacement[i][1];
-          case Field::velocity_x:
-            return velocity[i][0];
-          case Field::velocity_y:
-            return velocity[i][1];
-          case Field::traction_x:
-            return traction[i][0];
-          case Field::traction_y:
-            return traction[i][1];
-          case Field::stress_xx:
-            return stress[i][0][0];
-          case Field::stress_yy:
-            return stress[i][1][1];
-          case Field::stress_xy:
-            return stress[i][0][1];
-          case Field::stress_zz:
-            return stress_zz[i];
-          case Field::strain_xx:
-            return strain[i][0][0];
-          case Field::strain_yy:
-            return strain[i][1][1];
-          case Field::strain_xy:
-            return strain[i][0][1];
-          default:
-            Assert(false, ExcInternalError());
-            return 0;
+          const double *in          = buffer.data() + start;
+          const auto    next        = [&in]() { return *in++; };
+          const auto    read_vector = [&next]() {
+            Tensor<1, dim> v;
+            for (unsigned int d = 0; d < dim; ++d)
+              v[d] = next();
+            return v;
+          };
+          // The cell is the caller's to find; 0 is a placeholder.
+          id.push_back(static_cast<std::uint64_t>(next()));
+          cell.push_back(0);
+          mass.push_back(next());
+          volume.push_back(next());
+          density.push_back(next());
+          position.emplace_back(read_vector());
+          initial_position.emplace_back(read_vector());
+          displacement.push_back(read_vector());
+          velocity.push_back(read_vector());
+          SymmetricTensor<2, dim> s;
+          for (unsigned int k = 0; k < n_stress_components(dim); ++k)
+            s.access_raw_entry(k) = next();
+          stress.push_back(s);
+          state.insert(state.end(), in, in + n_state());
         }
     }
 
-    void
-    ParticleSet::set(const std::size_t i, const Field f, const double value)
-    {
-      switch (f)
-        {
-          case Field::id:
-            id[i] = static_cast<std::uint64_t>(value);
-            break;
-          case Field::mass:
-            mass[i] = value;
-            break;
-          case Field::volume:
-            volume[i] = value;
-            break;
-          case Field::density:
-            density[i] = value;
-            break;
-          case Field::position_x:
-            position[i][0] = value;
-            break;
-          case Field::position_y:
-            position[i][1] = value;
-            break;
-          case Field::initial_position_x:
-            initial_position[i][0] = value;
-            break;
-          case Field::initial_position_y:
-            initial_position[i][1] = value;
-            break;
-          case Field::displacement_x:
-            displacement[i][0] = value;
-            break;
-          case Field::displacement_y:
-            displacement[i][1] = value;
-            break;
-          case Field::velocity_x:
-            velocity[i][0] = value;
-            break;
-          case Field::velocity_y:
-            velocity[i][1] = value;
-            break;
-          case Field::traction_x:
-            traction[i][0] = value;
-            break;
-          case Field::traction_y:
-            traction[i][1] = value;
-            break;
-          case Field::stress_xx:
-            stress[i][0][0] = value;
-            break;
-          case Field::stress_yy:
-            stress[i][1][1] = value;
-            break;
-          case Field::stress_xy:
-            stress[i][0][1] = value;
-            break;
-          case Field::stress_zz:
-            stress_zz[i] = value;
-            break;
-          case Field::strain_xx:
-            strain[i][0][0] = value;
-            break;
-          case Field::strain_yy:
-            strain[i][1][1] = value;
-            break;
-          case Field::strain_xy:
-            strain[i][0][1] = value;
-            break;
-          default:
-            Assert(false, ExcInternalError());
-        }
-    }
 
-    void
-    ParticleSet::pack(const std::size_t i, std::vector<double> &buffer) const
-    {
-      for (unsigned int f = 0; f < n_fields; ++f)
-        buffer.push_back(get(i, static_cast<Field>(f)));
-    }
 
+    template <int dim>
     void
-    ParticleSet::unpack(const std::vector<double> &buffer)
+    ParticleSet<dim>::compress(const std::vector<bool> &keep)
     {
-      AssertThrow(buffer.size() % n_fields == 0, ExcInternalError());
-      for (std::size_t start = 0; start < buffer.size(); start += n_fields)
-        {
-          const std::size_t i = size();
-          add(0, 0, Point<2>(), 0, 0);
-          for (unsigned int f = 0; f < n_fields; ++f)
-            set(i, static_cast<Field>(f), buffer[start + f]);
-        }
-    }
+      AssertDimension(keep.size(), size());
+      const unsigned int n_s = n_state();
+      std::size_t        j   = 0;
+      for (std::size_t i = 0; i < keep.size(); ++i)
+        if (keep[i])
+          {
+            // j <= i: moving entries left, front to back, is safe.
+            for (unsigned int k = 0; k < n_s; ++k)
+              state[j * n_s + k] = state[i * n_s + k];
+            ++j;
+          }
+      state.resize(j * n_s);
 
-    template <typename F>
-    void
-    ParticleSet::for_each_array(F &&f)
-    {
-      f(id);
-      f(cell);
-      f(mass);
-      f(volume);
-      f(density);
-      f(position);
-      f(initial_position);
-      f(displacement);
-      f(velocity);
-      f(traction);
-      f(stress);
-      f(stress_zz);
-      f(strain);
-    }
-
-    void
-    ParticleSet::compress(const std::vector<bool> &keep)
-    {
-      for_each_array([&keep](auto &array) {
+      for_each_array(*this, [&keep](auto &array) {
         std::size_t j = 0;
         for (std::size_t i = 0; i < array.size(); ++i)
           if (keep[i])
@@ -239,9 +180,13 @@ namespace psmpm
       });
     }
 
+
+
+    template <int dim>
     void
-    ParticleSet::sort_by_cell(const unsigned int n_cells)
+    ParticleSet<dim>::sort_by_cell(const unsigned int n_cells)
     {
+      // Counting sort: stable, so particles of one cell keep their order.
       std::vector<std::size_t> start(n_cells + 1, 0);
       for (const unsigned int c : cell)
         ++start[c + 1];
@@ -249,11 +194,23 @@ namespace psmpm
       std::vector<std::size_t> order(size());
       for (std::size_t i = 0; i < size(); ++i)
         order[start[cell[i]]++] = i;
-      for_each_array([&order](auto &array) {
+
+      for_each_array(*this, [&order](auto &array) {
         auto copy = array;
         for (std::size_t i = 0; i < order.size(); ++i)
           array[i] = copy[order[i]];
       });
+      const unsigned int        n_s = n_state();
+      const std::vector<double> copy(state);
+      for (std::size_t i = 0; i < order.size(); ++i)
+        std::copy(copy.begin() + order[i] * n_s,
+                  copy.begin() + (order[i] + 1) * n_s,
+                  state.begin() + i * n_s);
     }
+
+
+
+    template class ParticleSet<1>;
+    template class ParticleSet<2>;
   } // namespace Particles
 } // namespace psmpm

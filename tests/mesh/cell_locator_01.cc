@@ -16,17 +16,17 @@ int
 main()
 {
   std::ofstream out("output");
-  for (const auto type : {Mesh::MeshGenerator::Type::criss_cross,
-                          Mesh::MeshGenerator::Type::diagonal})
+  for (const auto type : {Mesh::MeshGenerator<2>::Type::criss_cross,
+                          Mesh::MeshGenerator<2>::Type::diagonal})
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::make_blocks(tria,
-                                       Point<2>(0, 0),
-                                       Point<2>(25, 2),
-                                       16,
-                                       3,
-                                       type);
-      Mesh::CellLocator locator;
+      Mesh::MeshGenerator<2>::make_blocks(tria,
+                                          Point<2>(0, 0),
+                                          Point<2>(25, 2),
+                                          16,
+                                          3,
+                                          type);
+      Mesh::CellLocator<2> locator;
       locator.reinit(tria);
 
       std::mt19937                                rng(42);
@@ -36,16 +36,16 @@ main()
       for (unsigned int i = 0; i < 2000; ++i)
         {
           const Point<2> p(ux(rng), uy(rng));
-          unsigned int   brute = Mesh::CellLocator::invalid;
+          unsigned int   brute = Mesh::CellLocator<2>::invalid;
           for (unsigned int c = 0; c < locator.n_cells(); ++c)
             if (locator.contains(c, p))
               brute = c;
           const unsigned int walk   = locator.locate(p, uc(rng));
           const unsigned int bucket = locator.locate(p);
-          wrong_walk +=
-            !(walk != Mesh::CellLocator::invalid && locator.contains(walk, p) &&
-              brute != Mesh::CellLocator::invalid);
-          wrong_bucket += !(bucket != Mesh::CellLocator::invalid &&
+          wrong_walk += !(walk != Mesh::CellLocator<2>::invalid &&
+                          locator.contains(walk, p) &&
+                          brute != Mesh::CellLocator<2>::invalid);
+          wrong_bucket += !(bucket != Mesh::CellLocator<2>::invalid &&
                             locator.contains(bucket, p));
         }
       out << "wrong walks " << wrong_walk << ", wrong bucket searches "
@@ -53,10 +53,10 @@ main()
       PSMPM_CHECK(out, wrong_walk == 0 && wrong_bucket == 0);
       PSMPM_CHECK(out,
                   locator.locate(Point<2>(25.5, 1.0), 0) ==
-                    Mesh::CellLocator::invalid);
+                    Mesh::CellLocator<2>::invalid);
       PSMPM_CHECK(out,
                   locator.locate(Point<2>(3.0, -0.01)) ==
-                    Mesh::CellLocator::invalid);
+                    Mesh::CellLocator<2>::invalid);
       // Smallest height: criss-cross blocks 25/16 x 2/3; diagonal likewise.
       out << "minimum height " << locator.minimum_height() << std::endl;
     }

@@ -11,26 +11,26 @@
 using namespace psmpm;
 
 void
-check(const Mesh::MeshGenerator::Type type,
-      const std::string              &name,
-      std::ofstream                  &out)
+check(const Mesh::MeshGenerator<2>::Type type,
+      const std::string                 &name,
+      std::ofstream                     &out)
 {
   const unsigned int nx = 5, ny = 3;
   const double       L = 25, H = 2;
   Triangulation<2>   tria;
-  Mesh::MeshGenerator::make_blocks(tria,
-                                   Point<2>(0, 0),
-                                   Point<2>(L, H),
-                                   nx,
-                                   ny,
-                                   type);
+  Mesh::MeshGenerator<2>::make_blocks(tria,
+                                      Point<2>(0, 0),
+                                      Point<2>(L, H),
+                                      nx,
+                                      ny,
+                                      type);
   out << name << ": cells " << tria.n_active_cells() << ", vertices "
       << tria.n_vertices() << std::endl;
   const unsigned int per_block =
-    type == Mesh::MeshGenerator::Type::criss_cross ? 4 : 2;
+    type == Mesh::MeshGenerator<2>::Type::criss_cross ? 4 : 2;
   PSMPM_CHECK(out, tria.n_active_cells() == per_block * nx * ny);
   const unsigned int centres =
-    type == Mesh::MeshGenerator::Type::criss_cross ? nx * ny : 0;
+    type == Mesh::MeshGenerator<2>::Type::criss_cross ? nx * ny : 0;
   PSMPM_CHECK(out, tria.n_vertices() == (nx + 1) * (ny + 1) + centres);
 
   double                                     area     = 0;
@@ -64,13 +64,13 @@ int
 main()
 {
   std::ofstream out("output");
-  check(Mesh::MeshGenerator::Type::criss_cross, "criss-cross", out);
-  check(Mesh::MeshGenerator::Type::diagonal, "diagonal", out);
+  check(Mesh::MeshGenerator<2>::Type::criss_cross, "criss-cross", out);
+  check(Mesh::MeshGenerator<2>::Type::diagonal, "diagonal", out);
 
   // Boundary names of the generator.
   ParameterHandler prm;
-  Mesh::MeshGenerator::declare_parameters(prm);
-  Mesh::MeshGenerator gen;
+  Mesh::MeshGenerator<2>::declare_parameters(prm);
+  Mesh::MeshGenerator<2> gen;
   gen.parse_parameters(prm);
   Triangulation<2> tria;
   gen.create(tria);

@@ -10,11 +10,11 @@
 using namespace psmpm;
 
 void
-report(const Particles::ParticleSet &particles,
-       const Mesh::CellLocator      &locator,
-       const double                  area,
-       const double                  density,
-       std::ofstream                &out)
+report(const Particles::ParticleSet<2> &particles,
+       const Mesh::CellLocator<2>      &locator,
+       const double                     area,
+       const double                     density,
+       std::ofstream                   &out)
 {
   double volume = 0, mass = 0, worst = 0;
   for (std::size_t p = 0; p < particles.size(); ++p)
@@ -36,8 +36,8 @@ main()
 {
   std::ofstream    out("output");
   ParameterHandler prm;
-  Mesh::MeshGenerator::declare_parameters(prm);
-  Particles::ParticleGenerator::declare_parameters(prm);
+  Mesh::MeshGenerator<2>::declare_parameters(prm);
+  Particles::ParticleGenerator<2>::declare_parameters(prm);
   prm.enter_subsection("Mesh");
   prm.set("Blocks x", "3");
   prm.set("Blocks y", "2");
@@ -47,16 +47,16 @@ main()
   prm.set("Per block y", "3");
   prm.leave_subsection();
 
-  Mesh::MeshGenerator mesh;
+  Mesh::MeshGenerator<2> mesh;
   mesh.parse_parameters(prm);
-  Particles::ParticleGenerator generator;
+  Particles::ParticleGenerator<2> generator;
   generator.parse_parameters(prm);
   Triangulation<2> tria;
   mesh.create(tria);
-  Mesh::CellLocator locator;
+  Mesh::CellLocator<2> locator;
   locator.reinit(tria);
 
-  Particles::ParticleSet particles;
+  Particles::ParticleSet<2> particles;
   generator.generate(
     mesh,
     tria,
@@ -80,7 +80,7 @@ main()
   prm.set("Region", "0, 0, 12.5, 2");
   prm.leave_subsection();
   generator.parse_parameters(prm);
-  Particles::ParticleSet half;
+  Particles::ParticleSet<2> half;
   generator.generate(
     mesh,
     tria,
@@ -92,17 +92,17 @@ main()
 
   // Per-cell layout on a diagonal mesh (as used for Gmsh meshes).
   Triangulation<2> tri2;
-  Mesh::MeshGenerator::make_blocks(tri2,
-                                   Point<2>(0, 0),
-                                   Point<2>(1, 1),
-                                   3,
-                                   3,
-                                   Mesh::MeshGenerator::Type::diagonal);
-  Mesh::CellLocator loc2;
+  Mesh::MeshGenerator<2>::make_blocks(tri2,
+                                      Point<2>(0, 0),
+                                      Point<2>(1, 1),
+                                      3,
+                                      3,
+                                      Mesh::MeshGenerator<2>::Type::diagonal);
+  Mesh::CellLocator<2> loc2;
   loc2.reinit(tri2);
-  Mesh::MeshGenerator gmsh_like = mesh;
-  gmsh_like.type                = Mesh::MeshGenerator::Type::gmsh;
-  Particles::ParticleSet per_cell;
+  Mesh::MeshGenerator<2> gmsh_like = mesh;
+  gmsh_like.type                   = Mesh::MeshGenerator<2>::Type::gmsh;
+  Particles::ParticleSet<2> per_cell;
   generator.region.clear();
   generator.per_cell = 3;
   generator.generate(

@@ -17,21 +17,23 @@ namespace psmpm
   namespace Mesh
   {
     /**
-     * Finds the triangle that contains a point, with the closed-form
-     * barycentric test (deal.II 9.4.1 tests "inside" against the unit
-     * square on triangles, see doc/design.md). After a small move a
-     * particle is found by walking from its old cell across the edge
-     * opposite the most negative barycentric coordinate; a bucket grid
-     * over the cells' bounding boxes finds any point from scratch and
+     * Finds the simplex (line or triangle) that contains a point, with the
+     * closed-form barycentric test (deal.II 9.4.1 tests "inside" against
+     * the unit square on triangles, see doc/design.md). After a small move
+     * a particle is found by walking from its old cell across the face
+     * opposite the most negative barycentric coordinate. From scratch, a
+     * bucket grid over the cells' bounding boxes (2D) or a binary search
+     * over the cells sorted by their left end (1D) finds any point and
      * catches walks that leave a non-convex domain.
      */
+    template <int dim>
     class CellLocator
     {
     public:
       static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
 
       void
-      reinit(const Triangulation<2> &tria);
+      reinit(const Triangulation<dim> &tria);
 
       unsigned int
       n_cells() const
@@ -40,30 +42,35 @@ namespace psmpm
       }
 
       /// Barycentric coordinates of @p p with respect to @p cell.
-      std::array<double, 3>
-      barycentric(const unsigned int cell, const Point<2> &p) const
+      std::array<double, dim + 1>
+      barycentric(const unsigned int cell, const Point<dim> &p) const
       {
         return maps[cell](p);
       }
 
       /// Whether @p p lies in the closed cell (with relative tolerance).
       bool
-      contains(const unsigned int cell, const Point<2> &p) const
+      contains(const unsigned int cell, const Point<dim> &p) const
       {
         const auto l = maps[cell](p);
-        return l[0] >= -tolerance && l[1] >= -tolerance && l[2] >= -tolerance;
+        for (unsigned int k = 0; k <= dim; ++k)
+          if (!(l[k] >= -tolerance))
+            return false;
+        return true;
       }
 
       /// Cell containing @p p, starting the walk at @p hint; invalid if
       /// the point lies outside the mesh.
       unsigned int
-      locate(const Point<2> &p, const unsigned int hint) const;
+      locate(const Point<dim> &p, const unsigned int hint) const;
 
-      /// Cell containing @p p by the bucket search; invalid if outside.
+      /// Cell containing @p p by the bucket (2D) or binary (1D) search;
+      /// invalid if outside.
       unsigned int
-      locate(const Point<2> &p) const;
+      locate(const Point<dim> &p) const;
 
-      /// Smallest height of any triangle (for the time step bound).
+      /// Smallest height of any triangle, or length of any line (for the
+      /// time step bound).
       double
       minimum_height() const
       {
@@ -73,16 +80,31 @@ namespace psmpm
     private:
       static constexpr double tolerance = 1e-12;
 
-      std::vector<BarycentricMap>              maps;
-      std::vector<std::array<unsigned int, 3>> neighbors; // opposite vertex k
-      double                                   min_height = 0;
+      std::vector<SimplexMap<dim>> maps;
+      /// neighbors[c][k]: the cell across the face opposite vertex k.
+      std::vector<std::array<unsigned int, dim + 1>> neighbors;
+      double                                         min_height = 0;
 
-      BoundingBox<2>              box;
-      std::array<unsigned int, 2> n_buckets{{1, 1}};
-      std::vector<unsigned int>   bucket_start;
-      std::vector<unsigned int>   bucket_cells;
-      std::array<unsigned int, 2>
-      bucket_of(const Point<2> &p) const;
+      /// Bounding box of the mesh, slightly enlarged.
+      BoundingBox<dim> box;
+
+      /// 2D: the bucket grid, cells of bucket b in
+      /// bucket_cells[bucket_start[b], bucket_start[b+1]).
+      /// 1D: bucket_cells holds the cells sorted by their left ends,
+      /// which are in lower_ends.
+      std::array<unsigned int, dim> n_buckets{};
+      std::vector<unsigned int>     bucket_start;
+      std::vector<unsigned int>     bucket_cells;
+      std::vector<double>           lower_ends;
+
+      std::vector<BoundingBox<dim>>
+      set_up_cells(const Triangulation<dim> &tria);
+      void
+      set_up_search(const std::vector<BoundingBox<dim>> &boxes);
+      std::array<unsigned int, dim>
+      bucket_of(const Point<dim> &p) const;
+      unsigned int
+      search(const Point<dim> &p) const;
     };
   } // namespace Mesh
 } // namespace psmpm

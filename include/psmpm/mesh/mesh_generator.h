@@ -18,14 +18,20 @@ namespace psmpm
     using namespace dealii;
 
     /**
-     * Creates the 2D triangle mesh of a scene from the subsections
-     * "Geometry" and "Mesh": rectangles of Blocks x by Blocks y blocks,
-     * each split into four triangles around its centre ("criss-cross",
-     * thesis Fig. 4.2) or into two ("diagonal"), or a Gmsh file.
-     * Rectangle boundaries get the ids of left, right, bottom, top
-     * (0, 1, 2, 3); Gmsh physical line tags become boundary ids and their
-     * physical names become boundary names.
+     * Creates the simplex mesh of a scene from the subsections "Geometry"
+     * and "Mesh".
+     *
+     * 2D: rectangles of Blocks x by Blocks y blocks, each split into four
+     * triangles around its centre ("criss-cross", thesis Fig. 4.2) or into
+     * two ("diagonal"), or a Gmsh file. Rectangle boundaries get the ids of
+     * left, right, bottom, top (0, 1, 2, 3); Gmsh physical line tags become
+     * boundary ids and their physical names become boundary names.
+     *
+     * 1D: Blocks x equal lines on [0, Length] with the boundary ids of
+     * left (x = 0) and right (x = Length), 0 and 1. Type (other than gmsh,
+     * which is an error), Height and Blocks y are ignored.
      */
+    template <int dim>
     class MeshGenerator
     {
     public:
@@ -45,7 +51,7 @@ namespace psmpm
 
       /// Fill the (empty) triangulation @p tria.
       void
-      create(Triangulation<2> &tria) const;
+      create(Triangulation<dim> &tria) const;
 
       /// Map from boundary name to boundary id for the created mesh.
       const std::map<std::string, types::boundary_id> &
@@ -55,7 +61,8 @@ namespace psmpm
       types::boundary_id
       boundary_id(const std::string &name) const;
 
-      /// A rectangle [lower, upper] of nx by ny blocks split as @p type.
+      /// A rectangle [lower, upper] of nx by ny blocks split as @p type
+      /// (2D only, whatever dim).
       static void
       make_blocks(Triangulation<2>  &tria,
                   const Point<2>    &lower,
@@ -64,7 +71,8 @@ namespace psmpm
                   const unsigned int ny,
                   const Type         type);
 
-      /// Read a Gmsh .msh file; returns the physical names found in it.
+      /// Read a Gmsh .msh file of triangles; returns the physical names
+      /// found in it (2D only, whatever dim).
       static std::map<std::string, types::boundary_id>
       read_gmsh(Triangulation<2> &tria, const std::string &filename);
 

@@ -17,12 +17,19 @@ namespace psmpm
     using namespace dealii;
 
     /**
-     * Barycentric coordinates of a triangle as affine functions,
-     * lambda_k(x) = constant[k] + gradient[k] . x. This closed-form inverse
-     * of the affine triangle map replaces deal.II's generic (and, on
-     * triangles in 9.4.1, unreliable) point inversion.
+     * Barycentric coordinates lambda_0, ..., lambda_dim of a simplex
+     * (a line in 1D, a triangle in 2D) as affine functions of x. These
+     * closed-form inverses of the affine cell map replace deal.II's generic
+     * (and, on triangles in 9.4.1, unreliable) point inversion.
      */
-    struct BarycentricMap
+    template <int dim>
+    struct SimplexMap;
+
+    /**
+     * Triangle: lambda_k(x) = constant[k] + gradient[k] . x.
+     */
+    template <>
+    struct SimplexMap<2>
     {
       std::array<double, 3>       constant;
       std::array<Tensor<1, 2>, 3> gradient;
@@ -35,6 +42,28 @@ namespace psmpm
                  constant[2] + gradient[2] * p}};
       }
     };
+
+    /**
+     * Line [vertex[0], vertex[1]]: lambda_k(x) = gradient[k] (x - vertex[1-k]).
+     * Measuring from the opposite vertex rather than from the origin keeps
+     * the round-off relative to the element length: lambda_k vanishes
+     * exactly at the opposite vertex however far the mesh is from x = 0.
+     */
+    template <>
+    struct SimplexMap<1>
+    {
+      std::array<Point<1>, 2>     vertex;
+      std::array<Tensor<1, 1>, 2> gradient;
+
+      std::array<double, 2>
+      operator()(const Point<1> &p) const
+      {
+        return {{gradient[0] * (p - vertex[1]), gradient[1] * (p - vertex[0])}};
+      }
+    };
+
+    /// The triangle map under its historical name.
+    using BarycentricMap = SimplexMap<2>;
 
     /// Signed area of the triangle (positive when counter-clockwise).
     inline double
@@ -59,6 +88,38 @@ namespace psmpm
           m.gradient[k][1] = (b[0] - a[0]) / twice_area;
           m.constant[k]    = (a[0] * b[1] - b[0] * a[1]) / twice_area;
         }
+      return m;
+    }
+
+    /// Signed length of the line (positive when vertex 1 is right of 0).
+    inline double
+    signed_length(const std::array<Point<1>, 2> &v)
+    {
+      return v[1][0] - v[0][0];
+    }
+
+    /// Signed measure of a simplex: length in 1D, area in 2D.
+    inline double
+    signed_measure(const std::array<Point<1>, 2> &v)
+    {
+      return signed_length(v);
+    }
+
+    inline double
+    signed_measure(const std::array<Point<2>, 3> &v)
+    {
+      return signed_area(v);
+    }
+
+    inline SimplexMap<1>
+    barycentric_map(const std::array<Point<1>, 2> &v)
+    {
+      const double length = signed_length(v);
+      Assert(length != 0, ExcMessage("degenerate line"));
+      SimplexMap<1> m;
+      m.vertex         = v;
+      m.gradient[0][0] = -1 / length;
+      m.gradient[1][0] = 1 / length;
       return m;
     }
   } // namespace Mesh

@@ -18,13 +18,20 @@ namespace psmpm
   namespace Particles
   {
     /**
-     * Initial material points (subsection "Particles"). On block meshes a
-     * regular "Per block x" by "Per block y" layout at the centres of a
-     * uniform sub-grid of every block (thesis Sec. 4.1); on Gmsh meshes
-     * each triangle is split into "Per cell"^2 similar triangles with a
-     * particle at each centroid. Volume = covered area / particles in it,
-     * mass = density x volume. "Region" limits the material to a box.
+     * Initial material points (subsection "Particles").
+     *
+     * 2D: on block meshes a regular "Per block x" by "Per block y" layout
+     * at the centres of a uniform sub-grid of every block (thesis
+     * Sec. 4.1); on Gmsh meshes each triangle is split into "Per cell"^2
+     * similar triangles with a particle at each centroid.
+     *
+     * 1D: "Per block x" particles in every element, at the centres of
+     * equal sub-intervals.
+     *
+     * Volume = covered measure (area in 2D, length in 1D) / particles in
+     * it, mass = density x volume. "Region" limits the material to a box.
      */
+    template <int dim>
     class ParticleGenerator
     {
     public:
@@ -38,27 +45,28 @@ namespace psmpm
        * Ids are global and independent of the number of ranks.
        */
       void
-      generate(const Mesh::MeshGenerator               &mesh,
-               const Triangulation<2>                  &tria,
-               const Mesh::CellLocator                 &locator,
+      generate(const Mesh::MeshGenerator<dim>          &mesh,
+               const Triangulation<dim>                &tria,
+               const Mesh::CellLocator<dim>            &locator,
                const double                             density,
                const std::function<bool(unsigned int)> &is_owned,
-               ParticleSet                             &particles) const;
+               ParticleSet<dim>                        &particles) const;
 
-      unsigned int        per_block_x = 16;
-      unsigned int        per_block_y = 14;
-      unsigned int        per_cell    = 3;
-      std::vector<double> region; ///< empty or {x0, y0, x1, y1}
+      unsigned int per_block_x = 16;
+      unsigned int per_block_y = 14;
+      unsigned int per_cell    = 3;
+      /// Empty, or the box {x0, x1} (1D) or {x0, y0, x1, y1} (2D).
+      std::vector<double> region;
       double              max_particles = 5e7;
 
       /// Refuse particle counts above Maximum number before any mesh is
-      /// built (block meshes).
+      /// built (block meshes; every 1D mesh).
       void
-      check_count(const Mesh::MeshGenerator &mesh) const;
+      check_count(const Mesh::MeshGenerator<dim> &mesh) const;
 
     private:
       bool
-      in_region(const Point<2> &p) const;
+      in_region(const Point<dim> &p) const;
     };
   } // namespace Particles
 } // namespace psmpm
