@@ -44,7 +44,7 @@ main(int argc, char **argv)
       const unsigned int blocks = std::stoul(argv[3]);
       const std::string  output = argv[4];
 
-      psmpm::Mesh::MeshGenerator mesh;
+      psmpm::Mesh::MeshGenerator<2> mesh;
       mesh.type =
         (type == "diagonal" ? psmpm::Mesh::MeshGenerator::Type::diagonal :
                               psmpm::Mesh::MeshGenerator::Type::criss_cross);

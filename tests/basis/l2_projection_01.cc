@@ -21,12 +21,12 @@ main(int argc, char **argv)
     using namespace psmpm;
     const std::string quadratic = "1 + 2*x - 3*y + 0.5*x^2 - 1.5*x*y + 2.5*y^2";
 
-    Mesh::MeshGenerator diagonal;
-    diagonal.type     = Mesh::MeshGenerator::Type::diagonal;
+    Mesh::MeshGenerator<2> diagonal;
+    diagonal.type     = Mesh::MeshGenerator<2>::Type::diagonal;
     diagonal.blocks_x = 3;
     diagonal.blocks_y = 2;
-    Mesh::MeshGenerator gmsh;
-    gmsh.type = Mesh::MeshGenerator::Type::gmsh;
+    Mesh::MeshGenerator<2> gmsh;
+    gmsh.type = Mesh::MeshGenerator<2>::Type::gmsh;
     gmsh.file = PSMPM_SOURCE_DIR "/tests/basis/l_shape.msh";
 
     Solver::L2Projection projection;

@@ -23,8 +23,8 @@ main(int argc, char **argv)
     double       error[2];
     for (unsigned int i = 0; i < 2; ++i)
       {
-        Mesh::MeshGenerator mesh;
-        mesh.type     = Mesh::MeshGenerator::Type::diagonal;
+        Mesh::MeshGenerator<2> mesh;
+        mesh.type     = Mesh::MeshGenerator<2>::Type::diagonal;
         mesh.blocks_x = mesh.blocks_y = 2 << i;
         Solver::L2Projection projection;
         projection.write_output = false;
