@@ -46,8 +46,8 @@ main(int argc, char **argv)
 
       psmpm::Mesh::MeshGenerator<2> mesh;
       mesh.type =
-        (type == "diagonal" ? psmpm::Mesh::MeshGenerator::Type::diagonal :
-                              psmpm::Mesh::MeshGenerator::Type::criss_cross);
+        (type == "diagonal" ? psmpm::Mesh::MeshGenerator<2>::Type::diagonal :
+                              psmpm::Mesh::MeshGenerator<2>::Type::criss_cross);
       mesh.length   = 1;
       mesh.height   = 1;
       mesh.blocks_x = blocks;

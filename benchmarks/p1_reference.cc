@@ -60,13 +60,13 @@ main(int argc, char **argv)
   for (const unsigned int n : blocks)
     {
       Triangulation<2> tria;
-      psmpm::Mesh::MeshGenerator::make_blocks(
+      psmpm::Mesh::MeshGenerator<2>::make_blocks(
         tria,
         Point<2>(0, 0),
         Point<2>(1, 1),
         n,
         n,
-        psmpm::Mesh::MeshGenerator::Type::diagonal);
+        psmpm::Mesh::MeshGenerator<2>::Type::diagonal);
       DoFHandler<2> dof_handler(tria);
       dof_handler.distribute_dofs(fe);
       AffineConstraints<double> constraints;
