@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/fe/fe_simplex_p.h>
 
+#include <psmpm/base/registry.h>
 #include <psmpm/basis/powell_sabin.h>
 #include <psmpm/mesh/triangle_geometry.h>
 
@@ -37,6 +38,34 @@ namespace psmpm
         {4, 2, 6, 10, 15, 17},
         {2, 5, 6, 11, 18, 15},
         {5, 0, 6, 12, 13, 18}};
+
+      /**
+       * The 7-point rule of degree 5 on a triangle (Radon; the same as
+       * QGaussSimplex<2>(3) up to the order of the points), in barycentric
+       * coordinates, weights summing to 1. Kept in the order and form the
+       * L2 projection used before it asked the space for its quadrature,
+       * so that its results did not change.
+       */
+      struct TriangleRule
+      {
+        std::array<std::array<double, 3>, 7> points;
+        std::array<double, 7>                weights;
+        TriangleRule()
+        {
+          const double s  = std::sqrt(15.);
+          const double a1 = (6 - s) / 21, b1 = (9 + 2 * s) / 21;
+          const double a2 = (6 + s) / 21, b2 = (9 - 2 * s) / 21;
+          const double w1 = (155 - s) / 1200, w2 = (155 + s) / 1200;
+          points  = {{{{1. / 3, 1. / 3, 1. / 3}},
+                      {{a1, a1, b1}},
+                      {{a1, b1, a1}},
+                      {{b1, a1, a1}},
+                      {{a2, a2, b2}},
+                      {{a2, b2, a2}},
+                      {{b2, a2, a2}}}};
+          weights = {{9. / 40, w1, w1, w1, w2, w2, w2}};
+        }
+      };
 
       std::string
       describe_vertex(const unsigned int index, const Point<2> &p)
@@ -708,5 +737,99 @@ namespace psmpm
             }
         }
     }
-  } // namespace Basis
+
+    std::vector<Point<2>>
+    PowellSabin::control_points(const DoFHandler<2> &dof_handler) const
+    {
+      AssertThrow(vertex_data.size() ==
+                    dof_handler.get_triangulation().n_vertices(),
+                  ExcMessage("PowellSabin::control_points: call reinit() "
+                             "with this mesh first."));
+      std::vector<Point<2>>                points(dof_handler.n_dofs());
+      std::vector<types::global_dof_index> dofs(9);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            cell->get_dof_indices(dofs);
+            // Local DoF 3k+q is component q of cell vertex k, i.e. the
+            // function whose coefficient is the value at Q_{v,q}.
+            for (unsigned int k = 0; k < 3; ++k)
+              for (unsigned int q = 0; q < 3; ++q)
+                points[dofs[3 * k + q]] =
+                  vertex_data[cell->vertex_index(k)].control_points[q];
+          }
+      return points;
+    }
+
+    FullMatrix<double>
+    PowellSabin::extrapolation_weights(const unsigned int from,
+                                       const unsigned int to) const
+    {
+      AssertIndexRange(from, vertex_data.size());
+      AssertIndexRange(to, vertex_data.size());
+      const auto         bary = Mesh::barycentric_map(control_triangle(from));
+      const auto        &Q    = control_triangle(to);
+      FullMatrix<double> W(3, 3);
+      for (unsigned int q = 0; q < 3; ++q)
+        {
+          const auto l = bary(Q[q]);
+          for (unsigned int r = 0; r < 3; ++r)
+            W(q, r) = l[r];
+        }
+      return W;
+    }
+
+    Quadrature<2>
+    PowellSabin::cell_quadrature(const DoFHandler<2> &dof_handler,
+                                 const unsigned int   cell) const
+    {
+      (void)dof_handler;
+      AssertThrow(cell < ps_refinement.n_cells() &&
+                    ps_refinement.n_cells() ==
+                      dof_handler.get_triangulation().n_active_cells(),
+                  ExcMessage("PowellSabin::cell_quadrature: call reinit() "
+                             "with this mesh first."));
+      static const TriangleRule rule;
+      const auto               &c = ps_refinement.cell(cell);
+      std::vector<Point<2>>     points;
+      std::vector<double>       weights;
+      points.reserve(6 * 7);
+      weights.reserve(6 * 7);
+      for (unsigned int s = 0; s < 6; ++s)
+        {
+          const auto   t    = c.sub_triangle(s);
+          const double area = Mesh::signed_area(t);
+          for (unsigned int q = 0; q < 7; ++q)
+            {
+              const auto &l = rule.points[q];
+              points.emplace_back(l[0] * t[0][0] + l[1] * t[1][0] +
+                                    l[2] * t[2][0],
+                                  l[0] * t[0][1] + l[1] * t[1][1] +
+                                    l[2] * t[2][1]);
+              weights.push_back(area * rule.weights[q]);
+            }
+        }
+      return Quadrature<2>(points, weights);
+    }
+
+    double
+    PowellSabin::stability_factor(const bool lumped) const
+    {
+      // Measured by bisection on the vibrating bar with criss-cross blocks
+      // (contrib/stability_study.py: 1.61 lumped, 0.43 consistent),
+      // rounded down; doc/stability.md.
+      return lumped ? 1.5 : 0.4;
+    }
+
+    namespace
+    {
+      const Registration<SpaceRegistry<2>> register_powell_sabin(
+        {"powell-sabin",
+         "quadratic C1 Powell-Sabin splines, three per vertex",
+         []() -> std::unique_ptr<Space<2>> {
+           return std::make_unique<PowellSabin>();
+         },
+         nullptr});
+    } // namespace
+  }   // namespace Basis
 } // namespace psmpm

@@ -1,20 +1,19 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <psmpm/basis/linear.h>
-#include <psmpm/basis/powell_sabin.h>
 #include <psmpm/basis/space.h>
 
 namespace psmpm
 {
   namespace Basis
   {
+    template <int dim>
     void
-    Space::evaluate(const unsigned int  n,
-                    const unsigned int *cells,
-                    const Point<2>     *points,
-                    double             *values,
-                    Tensor<1, 2>       *gradients) const
+    Space<dim>::evaluate(const unsigned int  n,
+                         const unsigned int *cells,
+                         const Point<dim>   *points,
+                         double             *values,
+                         Tensor<1, dim>     *gradients) const
     {
       const unsigned int n_dofs = dofs_per_cell();
       for (unsigned int i = 0; i < n; ++i)
@@ -24,17 +23,20 @@ namespace psmpm
                  gradients != nullptr ? gradients + n_dofs * i : nullptr);
     }
 
-    std::unique_ptr<Space>
+    template <int dim>
+    std::unique_ptr<Space<dim>>
     create_space(const std::string &name)
     {
-      if (name == "linear")
-        return std::make_unique<Linear>();
-      if (name == "powell-sabin")
-        return std::make_unique<PowellSabin>();
-      AssertThrow(false,
-                  ExcMessage("Basis/Type = " + name +
-                             ": unknown basis (known: linear, powell-sabin)."));
-      return nullptr;
+      // The spaces register themselves from their own source files
+      // (linear.cc, powell_sabin.cc), so this file names none of them.
+      return SpaceRegistry<dim>::instance().create(name, "Basis/Type");
     }
+
+    template class Space<1>;
+    template class Space<2>;
+    template std::unique_ptr<Space<1>>
+    create_space<1>(const std::string &);
+    template std::unique_ptr<Space<2>>
+    create_space<2>(const std::string &);
   } // namespace Basis
 } // namespace psmpm

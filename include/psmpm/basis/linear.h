@@ -16,11 +16,16 @@ namespace psmpm
   namespace Basis
   {
     /**
-     * Classical linear (P1) Lagrange functions on triangles: the
-     * barycentric coordinates of each cell, stored as affine functions so
-     * that evaluation is three multiply-adds per function.
+     * Classical linear Lagrange functions on simplices (hat functions on
+     * lines in 1D, P1 on triangles in 2D): the barycentric coordinates of
+     * each cell, stored as affine functions so that evaluation is dim + 1
+     * multiply-adds per function. The DoF layout is FE_SimplexP<dim>(1),
+     * whose local function k is the DoF of cell->vertex(k).
+     *
+     * Registered as "linear" in SpaceRegistry<1> and SpaceRegistry<2>.
      */
-    class Linear : public Space
+    template <int dim>
+    class Linear : public Space<dim>
     {
     public:
       Linear();
@@ -28,42 +33,70 @@ namespace psmpm
       std::string
       name() const override;
 
-      const FiniteElement<2> &
+      const FiniteElement<dim> &
       dof_layout() const override;
 
       void
-      reinit(const DoFHandler<2> &dof_handler) override;
+      reinit(const DoFHandler<dim> &dof_handler) override;
 
       void
       evaluate(const unsigned int cell,
-               const Point<2>    &p,
+               const Point<dim>  &p,
                double            *values,
-               Tensor<1, 2>      *gradients) const override;
+               Tensor<1, dim>    *gradients) const override;
 
       void
       evaluate(const unsigned int  n,
                const unsigned int *cells,
-               const Point<2>     *points,
+               const Point<dim>   *points,
                double             *values,
-               Tensor<1, 2>       *gradients) const override;
+               Tensor<1, dim>     *gradients) const override;
 
+      /// u = g(V) at every vertex V of the boundaries @p ids.
       void
       make_dirichlet_constraints(
-        const DoFHandler<2>                &dof_handler,
+        const DoFHandler<dim>              &dof_handler,
         const std::set<types::boundary_id> &ids,
-        const Function<2>                  &g,
+        const Function<dim>                &g,
         AffineConstraints<double>          &constraints) const override;
 
+      /// The mesh vertices: the nodal coefficients f(V) reproduce affine f.
+      std::vector<Point<dim>>
+      control_points(const DoFHandler<dim> &dof_handler) const override;
+
+      /// The 1 x 1 identity: the linear part of a hat function at its
+      /// vertex is its nodal value.
+      FullMatrix<double>
+      extrapolation_weights(const unsigned int from,
+                            const unsigned int to) const override;
+
+      /**
+       * The simplex Gauss rule of degree 5 mapped to the cell. Products of
+       * two functions need degree 2 only; the higher degree makes the
+       * right-hand side of an L2 projection of a smooth function accurate
+       * to well below the projection error.
+       */
+      Quadrature<dim>
+      cell_quadrature(const DoFHandler<dim> &dof_handler,
+                      const unsigned int     cell) const override;
+
+      double
+      stability_factor(const bool lumped) const override;
+
     private:
-      FE_SimplexP<2> fe;
+      FE_SimplexP<dim> fe;
 
       /// lambda_k(x) = constant[k] + gradient[k] . x, per cell.
       struct CellData
       {
-        std::array<double, 3>       constant;
-        std::array<Tensor<1, 2>, 3> gradient;
+        std::array<double, dim + 1>         constant;
+        std::array<Tensor<1, dim>, dim + 1> gradient;
       };
       std::vector<CellData> cell_data;
+
+      /// Vertices per cell, for cell_quadrature(); kept apart from
+      /// cell_data so that evaluate() touches one small block per cell.
+      std::vector<std::array<Point<dim>, dim + 1>> cell_vertices;
     };
   } // namespace Basis
 } // namespace psmpm

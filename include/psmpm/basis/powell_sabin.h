@@ -28,8 +28,11 @@ namespace psmpm
      * the vertex's DoFs. Everything evaluation needs is precomputed per cell
      * in one contiguous block, so evaluate() does no allocation and no
      * search beyond three comparisons.
+     *
+     * Two-dimensional only; registered as "powell-sabin" in
+     * SpaceRegistry<2>.
      */
-    class PowellSabin : public Space
+    class PowellSabin : public Space<2>
     {
     public:
       /// How the control triangle of a vertex sits relative to the boundary.
@@ -96,6 +99,37 @@ namespace psmpm
         const std::set<types::boundary_id> &ids,
         const Function<2>                  &g,
         AffineConstraints<double>          &constraints) const override;
+
+      /**
+       * Control point of DoF (vertex v, q) is Q_{v,q}, the q-th corner of
+       * the control triangle of v: the coefficients of an affine f are its
+       * values there (construction note, section 3).
+       */
+      std::vector<Point<2>>
+      control_points(const DoFHandler<2> &dof_handler) const override;
+
+      /**
+       * Powell-Sabin coefficients are values of the vertex's linear part
+       * at its control points, so W(q, r) is the r-th barycentric
+       * coordinate of control point Q_{to,q} in the control triangle of
+       * @p from: linear fields are extrapolated exactly.
+       */
+      FullMatrix<double>
+      extrapolation_weights(const unsigned int from,
+                            const unsigned int to) const override;
+
+      /**
+       * The 7-point simplex Gauss rule of degree 5 on each of the six PS
+       * sub-triangles of the cell (42 points): the functions are quadratic
+       * on each sub-triangle only, so a rule on the whole cell would not
+       * be exact for their products (degree 4).
+       */
+      Quadrature<2>
+      cell_quadrature(const DoFHandler<2> &dof_handler,
+                      const unsigned int   cell) const override;
+
+      double
+      stability_factor(const bool lumped) const override;
 
       /// @name Construction data, for tests and output.
       /// @{
