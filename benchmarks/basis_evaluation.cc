@@ -28,11 +28,11 @@ namespace
 
   struct Setup
   {
-    Triangulation<2>                     tria;
-    std::unique_ptr<DoFHandler<2>>       dof_handler;
-    std::unique_ptr<psmpm::Basis::Space> space;
-    std::vector<unsigned int>            cells;
-    std::vector<Point<2>>                points;
+    Triangulation<2>                        tria;
+    std::unique_ptr<DoFHandler<2>>          dof_handler;
+    std::unique_ptr<psmpm::Basis::Space<2>> space;
+    std::vector<unsigned int>               cells;
+    std::vector<Point<2>>                   points;
 
     Setup(const std::string &name,
           const unsigned int n_points,
@@ -45,7 +45,7 @@ namespace
         32,
         32,
         psmpm::Mesh::MeshGenerator::Type::diagonal);
-      space       = psmpm::Basis::create_space(name);
+      space       = psmpm::Basis::create_space<2>(name);
       dof_handler = std::make_unique<DoFHandler<2>>(tria);
       dof_handler->distribute_dofs(space->dof_layout());
       space->reinit(*dof_handler);

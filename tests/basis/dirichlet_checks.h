@@ -36,7 +36,7 @@ namespace dirichlet_checks
    * values).
    */
   inline std::pair<double, double>
-  boundary_deviation(const psmpm::Basis::Space          &space,
+  boundary_deviation(const psmpm::Basis::Space<2>       &space,
                      const DoFHandler<2>                &dof_handler,
                      const Vector<double>               &c,
                      const std::set<types::boundary_id> &ids,

@@ -18,8 +18,8 @@ namespace
   void
   check(std::ostream &out, const Triangulation<2> &tria)
   {
-    psmpm::Basis::Linear p1;
-    DoFHandler<2>        dof_handler(tria);
+    psmpm::Basis::Linear<2> p1;
+    DoFHandler<2>           dof_handler(tria);
     dof_handler.distribute_dofs(p1.dof_layout());
     p1.reinit(dof_handler);
     out << "cells " << tria.n_active_cells() << ", dofs "

@@ -26,8 +26,8 @@ main()
                                        3,
                                        2,
                                        type);
-      Basis::Linear space;
-      DoFHandler<2> dof_handler(tria);
+      Basis::Linear<2> space;
+      DoFHandler<2>    dof_handler(tria);
       dof_handler.distribute_dofs(space.dof_layout());
       space.reinit(dof_handler);
 
