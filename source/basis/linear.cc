@@ -190,7 +190,6 @@ namespace psmpm
     Linear<dim>::cell_quadrature(const DoFHandler<dim> &dof_handler,
                                  const unsigned int     cell) const
     {
-      (void)dof_handler;
       AssertThrow(cell < cell_vertices.size() &&
                     cell_vertices.size() ==
                       dof_handler.get_triangulation().n_active_cells(),

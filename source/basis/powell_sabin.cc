@@ -783,7 +783,6 @@ namespace psmpm
     PowellSabin::cell_quadrature(const DoFHandler<2> &dof_handler,
                                  const unsigned int   cell) const
     {
-      (void)dof_handler;
       AssertThrow(cell < ps_refinement.n_cells() &&
                     ps_refinement.n_cells() ==
                       dof_handler.get_triangulation().n_active_cells(),
