@@ -38,13 +38,13 @@ namespace
           const unsigned int n_points,
           const bool         sorted = false)
     {
-      psmpm::Mesh::MeshGenerator::make_blocks(
+      psmpm::Mesh::MeshGenerator<2>::make_blocks(
         tria,
         Point<2>(0, 0),
         Point<2>(1, 1),
         32,
         32,
-        psmpm::Mesh::MeshGenerator::Type::diagonal);
+        psmpm::Mesh::MeshGenerator<2>::Type::diagonal);
       space       = psmpm::Basis::create_space<2>(name);
       dof_handler = std::make_unique<DoFHandler<2>>(tria);
       dof_handler->distribute_dofs(space->dof_layout());

@@ -191,19 +191,20 @@ main()
     std::ofstream out("output");
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::make_blocks(tria,
-                                       Point<2>(0, 0),
-                                       Point<2>(3, 2),
-                                       3,
-                                       2,
-                                       Mesh::MeshGenerator::Type::criss_cross);
+      Mesh::MeshGenerator<2>::make_blocks(
+        tria,
+        Point<2>(0, 0),
+        Point<2>(3, 2),
+        3,
+        2,
+        Mesh::MeshGenerator<2>::Type::criss_cross);
       check_mesh(out, "criss-cross", tria);
     }
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::read_gmsh(tria,
-                                     PSMPM_SOURCE_DIR
-                                     "/tests/basis/l_shape.msh");
+      Mesh::MeshGenerator<2>::read_gmsh(tria,
+                                        PSMPM_SOURCE_DIR
+                                        "/tests/basis/l_shape.msh");
       check_mesh(out, "l_shape", tria);
     }
     {

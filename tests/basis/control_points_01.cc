@@ -141,20 +141,21 @@ main()
     std::ofstream out("output");
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::make_blocks(tria,
-                                       Point<2>(0, 0),
-                                       Point<2>(3, 2),
-                                       6,
-                                       4,
-                                       Mesh::MeshGenerator::Type::criss_cross);
+      Mesh::MeshGenerator<2>::make_blocks(
+        tria,
+        Point<2>(0, 0),
+        Point<2>(3, 2),
+        6,
+        4,
+        Mesh::MeshGenerator<2>::Type::criss_cross);
       check(out, "criss-cross", tria);
     }
     for (const std::string name : {"l_shape", "disk"})
       {
         Triangulation<2> tria;
-        Mesh::MeshGenerator::read_gmsh(tria,
-                                       PSMPM_SOURCE_DIR "/tests/basis/" + name +
-                                         ".msh");
+        Mesh::MeshGenerator<2>::read_gmsh(tria,
+                                          PSMPM_SOURCE_DIR "/tests/basis/" +
+                                            name + ".msh");
         check(out, name, tria);
       }
   });

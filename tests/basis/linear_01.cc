@@ -93,20 +93,20 @@ main()
     std::ofstream out("output");
     {
       Triangulation<2> tria;
-      psmpm::Mesh::MeshGenerator::make_blocks(
+      psmpm::Mesh::MeshGenerator<2>::make_blocks(
         tria,
         Point<2>(0, 0),
         Point<2>(1, 1),
         4,
         3,
-        psmpm::Mesh::MeshGenerator::Type::criss_cross);
+        psmpm::Mesh::MeshGenerator<2>::Type::criss_cross);
       check(out, tria);
     }
     {
       Triangulation<2> tria;
-      psmpm::Mesh::MeshGenerator::read_gmsh(tria,
-                                            PSMPM_SOURCE_DIR
-                                            "/tests/basis/l_shape.msh");
+      psmpm::Mesh::MeshGenerator<2>::read_gmsh(tria,
+                                               PSMPM_SOURCE_DIR
+                                               "/tests/basis/l_shape.msh");
       check(out, tria);
     }
   });

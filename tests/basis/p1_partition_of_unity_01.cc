@@ -16,16 +16,16 @@ int
 main()
 {
   std::ofstream out("output");
-  for (const auto type : {Mesh::MeshGenerator::Type::criss_cross,
-                          Mesh::MeshGenerator::Type::diagonal})
+  for (const auto type : {Mesh::MeshGenerator<2>::Type::criss_cross,
+                          Mesh::MeshGenerator<2>::Type::diagonal})
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::make_blocks(tria,
-                                       Point<2>(0, 0),
-                                       Point<2>(3, 2),
-                                       3,
-                                       2,
-                                       type);
+      Mesh::MeshGenerator<2>::make_blocks(tria,
+                                          Point<2>(0, 0),
+                                          Point<2>(3, 2),
+                                          3,
+                                          2,
+                                          type);
       Basis::Linear<2> space;
       DoFHandler<2>    dof_handler(tria);
       dof_handler.distribute_dofs(space.dof_layout());

@@ -18,13 +18,13 @@ main()
   return run_test([]() {
     std::ofstream    out("output");
     Triangulation<2> tria;
-    psmpm::Mesh::MeshGenerator::make_blocks(
+    psmpm::Mesh::MeshGenerator<2>::make_blocks(
       tria,
       Point<2>(0, 0),
       Point<2>(1, 1),
       4,
       3,
-      psmpm::Mesh::MeshGenerator::Type::criss_cross);
+      psmpm::Mesh::MeshGenerator<2>::Type::criss_cross);
     psmpm::Basis::PowellSabin ps;
     DoFHandler<2>             dof_handler(tria);
     dof_handler.distribute_dofs(ps.dof_layout());

@@ -50,12 +50,13 @@ main()
 
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::make_blocks(tria,
-                                       Point<2>(0, 0),
-                                       Point<2>(2, 1),
-                                       4,
-                                       3,
-                                       Mesh::MeshGenerator::Type::diagonal);
+      Mesh::MeshGenerator<2>::make_blocks(
+        tria,
+        Point<2>(0, 0),
+        Point<2>(2, 1),
+        4,
+        3,
+        Mesh::MeshGenerator<2>::Type::diagonal);
       Basis::PowellSabin ps;
       DoFHandler<2>      dof_handler(tria);
       dof_handler.distribute_dofs(ps.dof_layout());
@@ -134,9 +135,9 @@ main()
     }
     {
       Triangulation<2> tria;
-      Mesh::MeshGenerator::read_gmsh(tria,
-                                     PSMPM_SOURCE_DIR
-                                     "/tests/basis/l_shape.msh");
+      Mesh::MeshGenerator<2>::read_gmsh(tria,
+                                        PSMPM_SOURCE_DIR
+                                        "/tests/basis/l_shape.msh");
       Basis::PowellSabin ps;
       DoFHandler<2>      dof_handler(tria);
       dof_handler.distribute_dofs(ps.dof_layout());

@@ -82,13 +82,13 @@ main()
         << std::endl;
     {
       Triangulation<2> tria;
-      psmpm::Mesh::MeshGenerator::make_blocks(
+      psmpm::Mesh::MeshGenerator<2>::make_blocks(
         tria,
         Point<2>(0, 0),
         Point<2>(1, 1),
         6,
         6,
-        psmpm::Mesh::MeshGenerator::Type::diagonal);
+        psmpm::Mesh::MeshGenerator<2>::Type::diagonal);
       // Deterministic pseudo-random shifts of up to 0.4 h.
       std::vector<bool> moved(tria.n_vertices(), false);
       for (const auto &cell : tria.active_cell_iterators())

@@ -24,13 +24,13 @@ main(int argc, char **argv)
     std::ofstream out(root ? "output" : "/dev/null");
 
     parallel::shared::Triangulation<2> tria(comm);
-    psmpm::Mesh::MeshGenerator::make_blocks(
+    psmpm::Mesh::MeshGenerator<2>::make_blocks(
       tria,
       Point<2>(0, 0),
       Point<2>(1, 1),
       4,
       4,
-      psmpm::Mesh::MeshGenerator::Type::criss_cross);
+      psmpm::Mesh::MeshGenerator<2>::Type::criss_cross);
     psmpm::Basis::PowellSabin ps;
     DoFHandler<2>             dof_handler(tria);
     dof_handler.distribute_dofs(ps.dof_layout());

@@ -21,9 +21,9 @@ main()
   return run_test([]() {
     std::ofstream    out("output");
     Triangulation<2> tria;
-    psmpm::Mesh::MeshGenerator::read_gmsh(tria,
-                                          PSMPM_SOURCE_DIR
-                                          "/tests/basis/disk.msh");
+    psmpm::Mesh::MeshGenerator<2>::read_gmsh(tria,
+                                             PSMPM_SOURCE_DIR
+                                             "/tests/basis/disk.msh");
     psmpm::Basis::PowellSabin ps;
     DoFHandler<2>             dof_handler(tria);
     dof_handler.distribute_dofs(ps.dof_layout());
