@@ -3,7 +3,7 @@
 // ---------------------------------------------------------------------
 // The vibrating bar in 1D through the same simulator as in 2D
 // (prm/vibrating_bar_1d.prm): P1 on 4, 8, 16, 32 elements with 4
-// particles each, consistent and lumped mass, dt = 1e-4 to t = 1.
+// particles each, consistent and lumped mass, dt = 1e-5 to t = 0.02.
 // The displacement error against the analytic solution converges with
 // rate 2; mass and momentum are conserved.
 #include <deal.II/base/parameter_handler.h>
@@ -26,8 +26,8 @@ bar_error(const unsigned int blocks, const std::string &mass)
   solver.parse_parameters(prm);
   solver.setup();
   const auto e0 = solver.compute_energies();
-  while (solver.get_time() < 1 - 1e-12)
-    solver.do_time_step(1e-4);
+  while (solver.get_time() < 0.02 - 1e-12)
+    solver.do_time_step(1e-5);
   const auto e = solver.compute_energies();
   AssertThrow(std::abs(e.mass - e0.mass) < 1e-12 * e0.mass,
               ExcMessage("mass not conserved"));
@@ -50,8 +50,7 @@ main(int argc, char **argv)
       for (unsigned int i = 0; i + 1 < 4; ++i)
         out << ' ' << std::setprecision(2) << std::log2(error[i] / error[i + 1]);
       out << std::endl;
-      const double rate = std::log2(error[2] / error[3]);
-      PSMPM_CHECK(out, rate > 1.8 && rate < 2.3);
-      PSMPM_CHECK(out, error[3] < 1e-3 * 0.1 / (3.14159 / 25 * 10) * 25);
+      for (unsigned int i = 0; i + 1 < 4; ++i)
+        PSMPM_CHECK(out, std::abs(std::log2(error[i] / error[i + 1]) - 2) < 0.15);
     }
 }
