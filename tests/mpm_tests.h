@@ -16,7 +16,7 @@
 
 /// Set up @p solver from the default scene with the given overrides.
 inline void
-configure(psmpm::Simulator::Simulator<2>       &solver,
+configure(psmpm::Simulator::Simulator<2> &solver,
           const std::vector<std::string> &overrides)
 {
   ParameterHandler prm;

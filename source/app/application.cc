@@ -7,8 +7,8 @@
 
 #include <psmpm/app/application.h>
 #include <psmpm/postprocess/summary.h>
-#include <psmpm/solver/l2_projection.h>
 #include <psmpm/simulator/simulator.h>
+#include <psmpm/solver/l2_projection.h>
 
 #include <filesystem>
 #include <fstream>
@@ -256,10 +256,10 @@ end
       ParameterHandler prm;
       declare_parameters(prm);
       std::unique_ptr<Simulator::SimulatorBase> solver;
-      Mesh::MeshGenerator<2> mesh;
-      Solver::L2Projection projection;
-      std::string          problem, basis;
-      std::string          where = "the command line";
+      Mesh::MeshGenerator<2>                    mesh;
+      Solver::L2Projection                      projection;
+      std::string                               problem, basis;
+      std::string                               where = "the command line";
       try
         {
           cl = parse_command_line(args);
@@ -365,11 +365,11 @@ end
               summary.write(dir + "/summary.json");
               if (test_output)
                 {
-                  std::cout << "status = "
-                            << (status == Simulator::Status::completed ?
-                                  "completed" :
-                                  "unstable")
-                            << "\n";
+                  std::cout
+                    << "status = "
+                    << (status == Simulator::Status::completed ? "completed" :
+                                                                 "unstable")
+                    << "\n";
                   print_test_output(summary, std::cout);
                 }
               else

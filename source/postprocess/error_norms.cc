@@ -14,7 +14,8 @@ namespace psmpm
                                 const unsigned int    interval)
       : reference(reference)
       , interval(interval)
-    {}
+    {
+    }
 
     template <int dim>
     Errors
@@ -34,9 +35,10 @@ namespace psmpm
           const SymmetricTensor<2, dim> ds = particles.stress[p] - r.stress;
           e.stress += V * (ds * ds);
         }
-      e.displacement = std::sqrt(Utilities::MPI::sum(e.displacement, state.comm));
-      e.velocity     = std::sqrt(Utilities::MPI::sum(e.velocity, state.comm));
-      e.stress       = std::sqrt(Utilities::MPI::sum(e.stress, state.comm));
+      e.displacement =
+        std::sqrt(Utilities::MPI::sum(e.displacement, state.comm));
+      e.velocity = std::sqrt(Utilities::MPI::sum(e.velocity, state.comm));
+      e.stress   = std::sqrt(Utilities::MPI::sum(e.stress, state.comm));
       return e;
     }
 

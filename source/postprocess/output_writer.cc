@@ -168,11 +168,12 @@ namespace psmpm
       prm.enter_subsection("Output");
       prm.declare_entry(
         "Subdivisions",
-        "4",
-        Patterns::Integer(1, 16),
+        "0",
+        Patterns::Integer(0, 16),
         "Each cell of the grid output is split into this many sub-cells per "
         "edge so that quadratic fields (Powell-Sabin) look smooth in "
-        "ParaView; 1 shows the field at the corners only.");
+        "ParaView; 1 shows the field at the corners only; 0: automatic, 1 "
+        "for linear spaces and 4 for higher degrees.");
       prm.leave_subsection();
     }
 

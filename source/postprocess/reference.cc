@@ -17,7 +17,8 @@ namespace psmpm
       prm.declare_entry("Type",
                         "none",
                         Patterns::Selection(
-                          "none|" + ReferenceRegistry<2>::instance().selection()),
+                          "none|" +
+                          ReferenceRegistry<2>::instance().selection()),
                         "Reference for error norms. none; " +
                           ReferenceRegistry<2>::instance().documentation());
       prm.declare_entry("Velocity amplitude",
@@ -41,7 +42,7 @@ namespace psmpm
                            const Tensor<1, dim>          &gravity)
     {
       prm.enter_subsection("Reference solution");
-      const std::string            type = prm.get("Type");
+      const std::string           type = prm.get("Type");
       const ReferenceContext<dim> context{material,
                                           length,
                                           height,
@@ -57,7 +58,9 @@ namespace psmpm
                              " is a 1D solution and needs Material/Poisson's "
                              "ratio = 0."));
       return ReferenceRegistry<dim>::instance().create(
-        type, "Reference solution/Type (in " + std::to_string(dim) + "D)", context);
+        type,
+        "Reference solution/Type (in " + std::to_string(dim) + "D)",
+        context);
     }
 
     template class Reference<1>;

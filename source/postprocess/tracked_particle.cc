@@ -17,7 +17,8 @@ namespace psmpm
       : point(point)
       , reference(reference)
       , axis(reference.axis())
-    {}
+    {
+    }
 
     template <int dim>
     void
@@ -35,7 +36,8 @@ namespace psmpm
       const auto min = Utilities::MPI::min_max_avg(best, state.comm).min;
       // Smallest id among the ranks at the minimal distance.
       const double candidate = best == min ? double(mine) : 1e300;
-      id = static_cast<std::uint64_t>(Utilities::MPI::min(candidate, state.comm));
+      id =
+        static_cast<std::uint64_t>(Utilities::MPI::min(candidate, state.comm));
     }
 
     template <int dim>
@@ -57,8 +59,12 @@ namespace psmpm
                  0.};
           }
       std::vector<double> total(v.size());
-      MPI_Allreduce(
-        v.data(), total.data(), v.size(), MPI_DOUBLE, MPI_SUM, state.comm);
+      MPI_Allreduce(v.data(),
+                    total.data(),
+                    v.size(),
+                    MPI_DOUBLE,
+                    MPI_SUM,
+                    state.comm);
       history.push_back({{state.time, total[0], total[1], total[2], total[3]}});
       velocity2 += (total[1] - total[3]) * (total[1] - total[3]);
       displacement2 += (total[0] - total[2]) * (total[0] - total[2]);

@@ -69,7 +69,7 @@ namespace psmpm
           report(Failure::non_finite, "non-finite energy or momentum");
           return true;
         }
-      energy_scale      = std::max(energy_scale, energy_scale_now);
+      energy_scale        = std::max(energy_scale, energy_scale_now);
       const double growth = total_energy - initial_energy;
       if (growth > energy_tolerance * energy_scale && growth > 1e-300)
         {

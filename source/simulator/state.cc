@@ -14,7 +14,8 @@ namespace psmpm
                       Triangulation<dim>::none,
                       false,
                       parallel::shared::Triangulation<dim>::partition_metis)
-    {}
+    {
+    }
 
     template <int dim>
     State<dim>::~State()

@@ -59,18 +59,19 @@ namespace psmpm
     void
     TimeStepControl::initialize(const State<dim> &state)
     {
-      const double h_min  = state.locator.minimum_height();
-      const double c_p    = state.material->p_wave_speed();
-      const double bound  = h_min / c_p;
-      const double factor = state.space->stability_factor(!state.grid->uses_matrix());
+      const double h_min = state.locator.minimum_height();
+      const double c_p   = state.material->p_wave_speed();
+      const double bound = h_min / c_p;
+      const double factor =
+        state.space->stability_factor(!state.grid->uses_matrix());
       if (fixed_step > 0)
         {
           AssertThrow(fixed_step <= bound || !check_time_step,
                       ExcMessage("Time/Time step = " + prm_value(fixed_step) +
                                  " exceeds the stability bound h_min/c_p = " +
-                                 prm_value(bound) + " (h_min = " +
-                                 prm_value(h_min) + ", c_p = " +
-                                 prm_value(c_p) + ")."));
+                                 prm_value(bound) +
+                                 " (h_min = " + prm_value(h_min) +
+                                 ", c_p = " + prm_value(c_p) + ")."));
           time_step = fixed_step;
         }
       else

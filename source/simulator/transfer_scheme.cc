@@ -12,11 +12,12 @@ namespace psmpm
     TransferScheme<dim>::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Transfer");
-      prm.declare_entry("Scheme",
-                        "musl",
-                        Patterns::Selection(
-                          TransferSchemeRegistry<dim>::instance().selection()),
-                        TransferSchemeRegistry<dim>::instance().documentation());
+      prm.declare_entry(
+        "Scheme",
+        "musl",
+        Patterns::Selection(
+          TransferSchemeRegistry<dim>::instance().selection()),
+        TransferSchemeRegistry<dim>::instance().documentation());
       TransferSchemeRegistry<dim>::instance().declare_parameters(prm);
       prm.leave_subsection();
     }

@@ -76,14 +76,15 @@ namespace psmpm
       : parameters(parameters)
       , dofs_per_cell(space.dofs_per_cell())
       , n_cells(dof_handler.get_triangulation().n_active_cells())
-      , mass_strategy(MassStrategyRegistry<dim>::instance().create(
-          parameters.type,
-          "Mass matrix/Type",
-          parameters.threshold))
+      , mass_strategy(
+          MassStrategyRegistry<dim>::instance().create(parameters.type,
+                                                       "Mass matrix/Type",
+                                                       parameters.threshold))
       , space(space)
       , dof_handler(dof_handler)
       , comm(comm)
-    {}
+    {
+    }
 
     template <int dim>
     void
@@ -173,9 +174,9 @@ namespace psmpm
                 for (unsigned int q = 0; q < vertices.dofs_per_vertex; ++q)
                   {
                     const auto g = cell->vertex_dof_index(k, q);
-                    vertices.dofs[v].push_back(
-                      relevant.is_element(g) ? relevant.index_within_set(g) :
-                                               numbers::invalid_unsigned_int);
+                    vertices.dofs[v].push_back(relevant.is_element(g) ?
+                                                 relevant.index_within_set(g) :
+                                                 numbers::invalid_unsigned_int);
                   }
             }
           for (const auto f : cell->face_indices())
@@ -183,7 +184,8 @@ namespace psmpm
               {
                 bool free = true;
                 for (unsigned int d = 0; d < dim; ++d)
-                  free = free && fixed[d].count(cell->face(f)->boundary_id()) == 0;
+                  free =
+                    free && fixed[d].count(cell->face(f)->boundary_id()) == 0;
                 if (free)
                   for (const auto v : cell->face(f)->vertex_indices())
                     vertices.on_free_boundary[cell->face(f)->vertex_index(v)] =
@@ -225,7 +227,7 @@ namespace psmpm
       std::vector<std::pair<Point<1>, double>>
       uniform_cell_points<1>(const std::vector<Point<1>> &v)
       {
-        const unsigned int                      k = 8;
+        const unsigned int                       k = 8;
         std::vector<std::pair<Point<1>, double>> r;
         for (unsigned int i = 0; i < k; ++i)
           r.emplace_back(v[0] + (i + 0.5) / k * (v[1] - v[0]), 1. / k);
@@ -236,9 +238,9 @@ namespace psmpm
       std::vector<std::pair<Point<2>, double>>
       uniform_cell_points<2>(const std::vector<Point<2>> &v)
       {
-        const unsigned int                      k  = 8;
-        const Tensor<1, 2>                      e1 = (v[1] - v[0]) / k;
-        const Tensor<1, 2>                      e2 = (v[2] - v[0]) / k;
+        const unsigned int                       k  = 8;
+        const Tensor<1, 2>                       e1 = (v[1] - v[0]) / k;
+        const Tensor<1, 2>                       e2 = (v[2] - v[0]) / k;
         std::vector<std::pair<Point<2>, double>> r;
         for (unsigned int j = 0; j < k; ++j)
           for (unsigned int i = 0; i + j < k; ++i)
@@ -389,7 +391,7 @@ namespace psmpm
 
       // Particle diagonal M_ii relative to the full-support one.
       const std::vector<double> diagonal = particle_diagonal();
-      double rmin = std::numeric_limits<double>::max();
+      double                    rmin     = std::numeric_limits<double>::max();
       for (const auto i : owned)
         {
           const unsigned int l = relevant.index_within_set(i);
@@ -464,7 +466,7 @@ namespace psmpm
       const double norm = rhs.l2_norm();
       if (norm == 0)
         return 0;
-      SolverControl control(parameters.max_iterations,
+      SolverControl                           control(parameters.max_iterations,
                             parameters.tolerance * norm,
                             false,
                             false);

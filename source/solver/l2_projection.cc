@@ -190,10 +190,10 @@ namespace psmpm
 
     void
     L2Projection::run(const Mesh::MeshGenerator<2> &mesh,
-                      const std::string         &basis_name,
-                      const std::string         &output_directory,
-                      Postprocess::Summary      &summary,
-                      MPI_Comm                   comm)
+                      const std::string            &basis_name,
+                      const std::string            &output_directory,
+                      Postprocess::Summary         &summary,
+                      MPI_Comm                      comm)
     {
       Triangulation<2> tria;
       mesh.create(tria);

@@ -42,12 +42,13 @@ main(int argc, char **argv)
   std::ofstream                    out("output");
   const double rho = 1000, omega = 1, R2 = 0.5, end_time = 0.08;
   const double centripetal = rho * omega * omega * R2;
-  const double E = 1e6;
+  const double E           = 1e6;
   for (const std::string model : {"neo-hookean", "hypoelastic"})
     {
       ParameterHandler prm;
       psmpm::App::declare_parameters(prm);
-      prm.parse_input(std::string(PSMPM_SOURCE_DIR) + "/prm/rotating_block.prm");
+      prm.parse_input(std::string(PSMPM_SOURCE_DIR) +
+                      "/prm/rotating_block.prm");
       for (const std::string o : {"Material/Model=" + model,
                                   std::string("Mesh/Blocks x=4"),
                                   std::string("Mesh/Blocks y=4"),
@@ -60,8 +61,8 @@ main(int argc, char **argv)
       solver.quiet = true;
       solver.parse_parameters(prm);
       solver.setup();
-      const auto  &p  = solver.get_particles();
-      const double h0 = angular_momentum(p);
+      const auto  &p              = solver.get_particles();
+      const double h0             = angular_momentum(p);
       const auto   largest_stress = [&p]() {
         double s = 0;
         for (std::size_t i = 0; i < p.size(); ++i)
@@ -73,10 +74,10 @@ main(int argc, char **argv)
       while (solver.get_time() < end_time * (1 - 1e-12))
         solver.do_time_step(1e-3);
       const double stress = largest_stress();
-      out << model << ": max |stress| / (rho omega^2 R^2) = "
-          << std::setprecision(2) << stress / centripetal << std::endl;
+      out << model
+          << ": max |stress| / (rho omega^2 R^2) = " << std::setprecision(2)
+          << stress / centripetal << std::endl;
       PSMPM_CHECK(out, stress < 2 * centripetal);
-      PSMPM_CHECK(out,
-                  std::abs(angular_momentum(p) / h0 - 1) < 1e-6);
+      PSMPM_CHECK(out, std::abs(angular_momentum(p) / h0 - 1) < 1e-6);
     }
 }

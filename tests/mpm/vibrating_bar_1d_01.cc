@@ -48,9 +48,11 @@ main(int argc, char **argv)
         error[i] = bar_error(4 << i, mass);
       out << mass << ": rates";
       for (unsigned int i = 0; i + 1 < 4; ++i)
-        out << ' ' << std::setprecision(2) << std::log2(error[i] / error[i + 1]);
+        out << ' ' << std::setprecision(2)
+            << std::log2(error[i] / error[i + 1]);
       out << std::endl;
       for (unsigned int i = 0; i + 1 < 4; ++i)
-        PSMPM_CHECK(out, std::abs(std::log2(error[i] / error[i + 1]) - 2) < 0.15);
+        PSMPM_CHECK(out,
+                    std::abs(std::log2(error[i] / error[i + 1]) - 2) < 0.15);
     }
 }

@@ -45,6 +45,12 @@ public:
     return "test P2";
   }
 
+  unsigned int
+  degree() const override
+  {
+    return 2;
+  }
+
   const FiniteElement<dim> &
   dof_layout() const override
   {

@@ -38,8 +38,11 @@ make_reference(const std::string &type,
   prm.set("Poisson's ratio", "0");
   prm.leave_subsection();
   const auto material = Material::Material<2>::create(prm);
-  return Postprocess::Reference<2>::create(
-    prm, *material, L, H, Tensor<1, 2>({0, -g}));
+  return Postprocess::Reference<2>::create(prm,
+                                           *material,
+                                           L,
+                                           H,
+                                           Tensor<1, 2>({0, -g}));
 }
 
 int
@@ -57,9 +60,10 @@ main()
         {
           const double y = H * i / 50.;
           const double u = column->evaluate(Point<2>(1, y), t).displacement[1];
-          closed_vs_series =
-            std::max(closed_vs_series,
-                     std::abs(u - Postprocess::soil_column_series(rho, E, g, H, y, t, 4000)));
+          closed_vs_series = std::max(
+            closed_vs_series,
+            std::abs(
+              u - Postprocess::soil_column_series(rho, E, g, H, y, t, 4000)));
           scale = std::max(scale, std::abs(u));
           if (t == 0)
             at_zero = std::max(at_zero, std::abs(u));
@@ -79,8 +83,9 @@ main()
   PSMPM_CHECK(out, top_stress < 1e-12 * rho * g * H);
   // Static limit of the mean: the time average of u is u_static; at
   // t = 2H/c (half a period) the column is at twice its static sag.
-  const double c   = std::sqrt(E / rho);
-  const double sag = column->evaluate(Point<2>(1, H), 2 * H / c).displacement[1];
+  const double c = std::sqrt(E / rho);
+  const double sag =
+    column->evaluate(Point<2>(1, H), 2 * H / c).displacement[1];
   PSMPM_CHECK(out,
               std::abs(sag - (-rho * g * H * H / E)) <
                 1e-12 * rho * g * H * H / E);

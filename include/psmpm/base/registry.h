@@ -112,8 +112,8 @@ namespace psmpm
     {
       const auto it = entries.find(name);
       AssertThrow(it != entries.end(),
-                  ExcMessage(entry + " = " + name + ": unknown (known: " +
-                             names() + ")."));
+                  ExcMessage(entry + " = " + name +
+                             ": unknown (known: " + names() + ")."));
       return it->second.create(args...);
     }
 

@@ -33,6 +33,12 @@ namespace psmpm
       std::string
       name() const override;
 
+      unsigned int
+      degree() const override
+      {
+        return 1;
+      }
+
       const FiniteElement<dim> &
       dof_layout() const override;
 

@@ -62,6 +62,12 @@ namespace psmpm
       std::string
       name() const override;
 
+      unsigned int
+      degree() const override
+      {
+        return 2;
+      }
+
       const FiniteElement<2> &
       dof_layout() const override;
 

@@ -57,6 +57,11 @@ namespace psmpm
       virtual const FiniteElement<dim> &
       dof_layout() const = 0;
 
+      /// Largest polynomial degree of the functions on a cell (what the
+      /// output needs to show the field faithfully).
+      virtual unsigned int
+      degree() const = 0;
+
       /// Number of functions that do not vanish on a cell.
       unsigned int
       dofs_per_cell() const

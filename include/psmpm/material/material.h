@@ -87,11 +87,11 @@ namespace psmpm
        * receives V_new / V_old.
        */
       virtual void
-      update(const unsigned int             n,
-             const Tensor<2, dim>          *dL,
-             SymmetricTensor<2, dim>       *stress,
-             double                        *state,
-             double                        *volume_ratio) const = 0;
+      update(const unsigned int       n,
+             const Tensor<2, dim>    *dL,
+             SymmetricTensor<2, dim> *stress,
+             double                  *state,
+             double                  *volume_ratio) const = 0;
 
       /// Stored energy per unit current volume of @p n particles.
       virtual void

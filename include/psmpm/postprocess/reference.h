@@ -68,7 +68,8 @@ namespace psmpm
       /// References computed alongside the run advance here.
       virtual void
       advance_to(const double)
-      {}
+      {
+      }
 
       virtual State
       evaluate(const Point<dim> &X, const double t) const = 0;

@@ -26,8 +26,7 @@ namespace psmpm
     class TrackedParticle
     {
     public:
-      TrackedParticle(const Point<dim>     &point,
-                      const Reference<dim> &reference);
+      TrackedParticle(const Point<dim> &point, const Reference<dim> &reference);
 
       /// Find the particle (smallest id among equally near ones).
       void

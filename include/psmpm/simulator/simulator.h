@@ -154,27 +154,27 @@ namespace psmpm
       State<dim>         state;
 
       // Scene description.
-      Mesh::MeshGenerator<dim>                   mesh_generator;
-      Particles::ParticleGenerator<dim>          particle_generator;
+      Mesh::MeshGenerator<dim>                     mesh_generator;
+      Particles::ParticleGenerator<dim>            particle_generator;
       typename Solver::GridSystem<dim>::Parameters grid_parameters;
-      std::string                                basis_name;
-      std::string                                velocity_expression;
-      std::string                                velocity_constants;
-      std::array<std::vector<std::string>, dim>  fixed_names;
-      unsigned int                               output_interval = 0;
-      unsigned int                               error_interval  = 1;
-      unsigned int                               subdivisions    = 4;
-      std::vector<double>                        tracked_point;
+      std::string                                  basis_name;
+      std::string                                  velocity_expression;
+      std::string                                  velocity_constants;
+      std::array<std::vector<std::string>, dim>    fixed_names;
+      unsigned int                                 output_interval = 0;
+      unsigned int                                 error_interval  = 1;
+      unsigned int                                 subdivisions    = 0;
+      std::vector<double>                          tracked_point;
 
       // Components.
-      std::unique_ptr<TransferScheme<dim>>                transfer;
-      TimeStepControl                                     time_step_control;
-      StabilityMonitor                                    monitor;
-      std::unique_ptr<Postprocess::Reference<dim>>        reference;
-      Postprocess::EnergyStatistics<dim>                  energy_statistics;
-      std::unique_ptr<Postprocess::ErrorNorms<dim>>       error_norms;
-      std::unique_ptr<Postprocess::TrackedParticle<dim>>  tracked;
-      std::unique_ptr<Postprocess::OutputWriter<dim>>     writer;
+      std::unique_ptr<TransferScheme<dim>>               transfer;
+      TimeStepControl                                    time_step_control;
+      StabilityMonitor                                   monitor;
+      std::unique_ptr<Postprocess::Reference<dim>>       reference;
+      Postprocess::EnergyStatistics<dim>                 energy_statistics;
+      std::unique_ptr<Postprocess::ErrorNorms<dim>>      error_norms;
+      std::unique_ptr<Postprocess::TrackedParticle<dim>> tracked;
+      std::unique_ptr<Postprocess::OutputWriter<dim>>    writer;
 
       // Run record.
       std::string  output_directory;

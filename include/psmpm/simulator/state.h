@@ -39,26 +39,26 @@ namespace psmpm
       void
       evaluate_shape_functions();
 
-      MPI_Comm                                  comm;
-      parallel::shared::Triangulation<dim>      triangulation;
-      DoFHandler<dim>                           dof_handler;
-      std::unique_ptr<Basis::Space<dim>>        space;
-      Mesh::CellLocator<dim>                    locator;
-      std::unique_ptr<Solver::GridSystem<dim>>  grid;
-      std::unique_ptr<Material::Material<dim>>  material;
-      Particles::ParticleSet<dim>               particles;
-      Tensor<1, dim>                            gravity;
-      std::vector<unsigned int>                 cell_owner; ///< MPI rank
+      MPI_Comm                                 comm;
+      parallel::shared::Triangulation<dim>     triangulation;
+      DoFHandler<dim>                          dof_handler;
+      std::unique_ptr<Basis::Space<dim>>       space;
+      Mesh::CellLocator<dim>                   locator;
+      std::unique_ptr<Solver::GridSystem<dim>> grid;
+      std::unique_ptr<Material::Material<dim>> material;
+      Particles::ParticleSet<dim>              particles;
+      Tensor<1, dim>                           gravity;
+      std::vector<unsigned int>                cell_owner; ///< MPI rank
       /// Basis at the particles, dofs_per_cell per particle.
-      std::vector<double>                       shape_values;
-      std::vector<Tensor<1, dim>>               shape_gradients;
+      std::vector<double>         shape_values;
+      std::vector<Tensor<1, dim>> shape_gradients;
       /// Grid fields in local relevant numbering.
-      std::vector<Tensor<1, dim>>               grid_velocity;
-      std::vector<Tensor<1, dim>>               grid_acceleration;
-      double                                    time = 0;
-      unsigned int                              step = 0;
+      std::vector<Tensor<1, dim>> grid_velocity;
+      std::vector<Tensor<1, dim>> grid_acceleration;
+      double                      time = 0;
+      unsigned int                step = 0;
       /// Length of the step under way (0 before the first).
-      double                                    dt = 0;
+      double dt = 0;
     };
   } // namespace Simulator
 } // namespace psmpm

@@ -80,17 +80,17 @@ namespace psmpm
       /// The vertex view of the DoFs, for vertex-wise strategies.
       struct VertexTables
       {
-        unsigned int dofs_per_vertex = 1;
+        unsigned int                           dofs_per_vertex = 1;
         std::vector<std::vector<unsigned int>> dofs;  ///< local relevant
         std::vector<std::vector<unsigned int>> cells; ///< active indices
         std::vector<std::vector<unsigned int>> neighbors;
         std::vector<bool>                      on_free_boundary;
       };
 
-      GridSystem(const Parameters       &parameters,
+      GridSystem(const Parameters        &parameters,
                  const Basis::Space<dim> &space,
-                 const DoFHandler<dim>  &dof_handler,
-                 MPI_Comm                comm);
+                 const DoFHandler<dim>   &dof_handler,
+                 MPI_Comm                 comm);
 
       /**
        * Index sets, constraints (component d fixed on fixed[d]) and, for

@@ -54,10 +54,10 @@ namespace psmpm
        */
       void
       run(const Mesh::MeshGenerator<2> &mesh,
-          const std::string         &basis_name,
-          const std::string         &output_directory,
-          Postprocess::Summary      &summary,
-          MPI_Comm                   comm);
+          const std::string            &basis_name,
+          const std::string            &output_directory,
+          Postprocess::Summary         &summary,
+          MPI_Comm                      comm);
 
       /// "sin(pi*x)*sin(pi*y)" by default; variables x, y; constant pi.
       std::string function_expression = "sin(pi*x)*sin(pi*y)";

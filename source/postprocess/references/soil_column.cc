@@ -48,7 +48,8 @@ namespace psmpm
           , youngs_modulus(c.material.youngs_modulus)
           , density(c.material.density)
           , g(-c.gravity[1])
-        {}
+        {
+        }
 
         State
         evaluate(const Point<2> &X, const double t) const override
@@ -61,9 +62,9 @@ namespace psmpm
           const auto   wp = column_extension(y + c * t, height, a);
           s.displacement[1] =
             a * (0.5 * y * y - height * y) + 0.5 * (wm.first + wp.first);
-          s.velocity[1]  = 0.5 * c * (wp.second - wm.second);
-          s.stress[1][1] = youngs_modulus *
-                           (a * (y - height) + 0.5 * (wm.second + wp.second));
+          s.velocity[1] = 0.5 * c * (wp.second - wm.second);
+          s.stress[1][1] =
+            youngs_modulus * (a * (y - height) + 0.5 * (wm.second + wp.second));
           return s;
         }
 
@@ -77,14 +78,14 @@ namespace psmpm
         const double height, youngs_modulus, density, g;
       };
 
-      Registration<ReferenceRegistry<2>> registration(
-        {"soil column",
-         "small-deformation column of Geometry/Height under Body "
-         "force/Gravity, bottom fixed (corrected thesis eq. 4.6)",
-         [](const ReferenceContext<2> &c) {
-           return std::make_unique<SoilColumn>(c);
-         },
-         nullptr});
+      Registration<ReferenceRegistry<2>>
+        registration({"soil column",
+                      "small-deformation column of Geometry/Height under Body "
+                      "force/Gravity, bottom fixed (corrected thesis eq. 4.6)",
+                      [](const ReferenceContext<2> &c) {
+                        return std::make_unique<SoilColumn>(c);
+                      },
+                      nullptr});
     } // namespace
 
     double

@@ -51,10 +51,10 @@ namespace psmpm
         evaluate(const Point<dim> &X, const double) const override
         {
           typename Reference<dim>::State s;
-          const auto r              = ulfem->evaluate(X[direction]);
-          s.displacement[direction] = r.displacement;
-          s.velocity[direction]     = r.velocity;
-          s.stress[direction][direction] = r.stress;
+          const auto                     r = ulfem->evaluate(X[direction]);
+          s.displacement[direction]        = r.displacement;
+          s.velocity[direction]            = r.velocity;
+          s.stress[direction][direction]   = r.stress;
           return s;
         }
 
@@ -75,17 +75,18 @@ namespace psmpm
       public:
         explicit BarULFEM(const ReferenceContext<dim> &c)
           : ULFEM<dim>(c, true)
-        {}
+        {
+        }
       };
 
-      Registration<ReferenceRegistry<2>> column(
-        {"soil column ulfem",
-         "the soil column with large deformations, by a 1D updated "
-         "Lagrangian FEM run alongside",
-         [](const ReferenceContext<2> &c) {
-           return std::make_unique<ULFEM<2>>(c, false);
-         },
-         nullptr});
+      Registration<ReferenceRegistry<2>>
+        column({"soil column ulfem",
+                "the soil column with large deformations, by a 1D updated "
+                "Lagrangian FEM run alongside",
+                [](const ReferenceContext<2> &c) {
+                  return std::make_unique<ULFEM<2>>(c, false);
+                },
+                nullptr});
     } // namespace
 
     RegisterForDims<ReferenceRegistry, BarULFEM> register_bar_ulfem(

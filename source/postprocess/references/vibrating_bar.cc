@@ -24,13 +24,14 @@ namespace psmpm
           , length(c.length)
           , youngs_modulus(c.material.youngs_modulus)
           , density(c.material.density)
-        {}
+        {
+        }
 
         typename Reference<dim>::State
         evaluate(const Point<dim> &X, const double t) const override
         {
           typename Reference<dim>::State s;
-          const double k = numbers::PI / length;
+          const double                   k = numbers::PI / length;
           const double w = k * std::sqrt(youngs_modulus / density);
           s.displacement[0] =
             amplitude / w * std::sin(w * t) * std::sin(k * X[0]);

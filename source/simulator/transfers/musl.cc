@@ -73,21 +73,21 @@ namespace psmpm
           auto              &grid = *state.grid;
           grid.zero_cell_mass();
           grid.zero_cell_rhs();
-          const auto         &particles  = state.particles;
-          const unsigned int  n          = grid.dofs_per_cell;
-          auto               &cells      = grid.cell_arrays();
-          const bool          consistent = !cells.mass.empty();
-          double             *lumped     = cells.lumped.data();
-          double             *mass_mat   = cells.mass.data();
-          Tensor<1, dim>     *rhs        = cells.rhs.data();
+          const auto        &particles  = state.particles;
+          const unsigned int n          = grid.dofs_per_cell;
+          auto              &cells      = grid.cell_arrays();
+          const bool         consistent = !cells.mass.empty();
+          double            *lumped     = cells.lumped.data();
+          double            *mass_mat   = cells.mass.data();
+          Tensor<1, dim>    *rhs        = cells.rhs.data();
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
-              const unsigned int             base = particles.cell[p] * n;
-              const double                   m    = particles.mass[p];
-              const double                   V    = particles.volume[p];
-              const SymmetricTensor<2, dim> &s    = particles.stress[p];
+              const unsigned int             base     = particles.cell[p] * n;
+              const double                   m        = particles.mass[p];
+              const double                   V        = particles.volume[p];
+              const SymmetricTensor<2, dim> &s        = particles.stress[p];
               const Tensor<1, dim>           external = m * state.gravity;
-              const double         *phi  = &state.shape_values[p * n];
+              const double                  *phi = &state.shape_values[p * n];
               const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
               for (unsigned int k = 0; k < n; ++k)
                 {
@@ -151,11 +151,12 @@ namespace psmpm
               Tensor<2, dim>        L; // velocity gradient, L_ij = dv_i/dx_j
               for (unsigned int k = 0; k < n; ++k)
                 {
-                  const Tensor<1, dim> &vk = state.grid_velocity[dofs[base + k]];
+                  const Tensor<1, dim> &vk =
+                    state.grid_velocity[dofs[base + k]];
                   v += phi[k] * vk;
                   L += outer_product(vk, grad[k]);
                 }
-              increments[p]        = dt * L;
+              increments[p]           = dt * L;
               const Tensor<1, dim> du = dt * v;
               particles.displacement[p] += du;
               particles.position[p] += du;
@@ -182,8 +183,7 @@ namespace psmpm
       };
     } // namespace
 
-    RegisterForDims<TransferSchemeRegistry, MUSL> register_musl(
-      "musl",
-      "modified update stress last (thesis Fig. 2.5)");
+    RegisterForDims<TransferSchemeRegistry, MUSL>
+      register_musl("musl", "modified update stress last (thesis Fig. 2.5)");
   } // namespace Simulator
 } // namespace psmpm

@@ -13,11 +13,12 @@ namespace psmpm
       /// (thesis Sec. 2.3); singular where functions lose their support.
       template <int dim>
       class Consistent : public MassStrategy<dim>
-      {};
+      {
+      };
     } // namespace
 
-    RegisterForDims<MassStrategyRegistry, Consistent> register_consistent(
-      "consistent",
-      "the particle mass matrix, solved by CG");
-  }   // namespace Solver
+    RegisterForDims<MassStrategyRegistry, Consistent>
+      register_consistent("consistent",
+                          "the particle mass matrix, solved by CG");
+  } // namespace Solver
 } // namespace psmpm

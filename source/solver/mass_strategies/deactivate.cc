@@ -16,7 +16,8 @@ namespace psmpm
       public:
         explicit Deactivate(const double threshold)
           : PoorlySupported<dim>(threshold, false)
-        {}
+        {
+        }
       };
     } // namespace
 

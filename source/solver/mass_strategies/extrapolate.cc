@@ -16,7 +16,8 @@ namespace psmpm
       public:
         explicit Extrapolate(const double threshold)
           : PoorlySupported<dim>(threshold, true)
-        {}
+        {
+        }
       };
     } // namespace
 

@@ -22,8 +22,7 @@ namespace psmpm
       };
     } // namespace
 
-    RegisterForDims<MassStrategyRegistry, Lumped> register_lumped(
-      "lumped",
-      "row-sum diagonal (no sparse matrix is built)");
-  }   // namespace Solver
+    RegisterForDims<MassStrategyRegistry, Lumped>
+      register_lumped("lumped", "row-sum diagonal (no sparse matrix is built)");
+  } // namespace Solver
 } // namespace psmpm

@@ -36,11 +36,11 @@ namespace psmpm
         static std::vector<bool>
         free_boundary_dofs(GridSystem<dim> &grid)
         {
-          const unsigned int n       = grid.dofs_per_cell;
-          const auto        &cells   = grid.cell_arrays();
-          const auto        &tables  = grid.vertex_tables();
-          const auto        &global  = grid.relevant_global_indices();
-          MPI_Comm           comm    = grid.get_communicator();
+          const unsigned int n      = grid.dofs_per_cell;
+          const auto        &cells  = grid.cell_arrays();
+          const auto        &tables = grid.vertex_tables();
+          const auto        &global = grid.relevant_global_indices();
+          MPI_Comm           comm   = grid.get_communicator();
           // Filled cells, known on every rank.
           std::vector<int> filled(grid.n_cells, 0);
           for (const unsigned int c : grid.owned_cells())
@@ -99,9 +99,10 @@ namespace psmpm
       };
     } // namespace
 
-    RegisterForDims<MassStrategyRegistry, PartiallyLumped> register_partiallylumped(
-      "partially lumped",
-      "couplings of free-boundary vertices moved to the diagonal "
+    RegisterForDims<MassStrategyRegistry, PartiallyLumped>
+      register_partiallylumped(
+        "partially lumped",
+        "couplings of free-boundary vertices moved to the diagonal "
         "(symmetric thesis Sec. 5.4)");
-  }   // namespace Solver
+  } // namespace Solver
 } // namespace psmpm

@@ -16,7 +16,8 @@ namespace psmpm
                                           const bool   extrapolate)
       : threshold(threshold)
       , extrapolate(extrapolate)
-    {}
+    {
+    }
 
     template <int dim>
     std::vector<bool>
@@ -80,8 +81,7 @@ namespace psmpm
     PoorlySupported<dim>::prepare(GridSystem<dim>           &grid,
                                   const std::vector<double> &diagonal)
     {
-      const std::vector<bool> outer =
-        poorly_supported_vertices(grid, diagonal);
+      const std::vector<bool> outer = poorly_supported_vertices(grid, diagonal);
       if (outer == previous_outer)
         return false;
       previous_outer = outer;
@@ -92,7 +92,7 @@ namespace psmpm
       unsigned int n_treated = 0;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const auto &dirichlet = grid.dirichlet_constraints(d);
+          const auto               &dirichlet = grid.dirichlet_constraints(d);
           AffineConstraints<double> step(grid.relevant_dofs());
           for (unsigned int v = 0; v < outer.size(); ++v)
             {
