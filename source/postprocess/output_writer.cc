@@ -143,6 +143,71 @@ namespace psmpm
             }
         return triangles;
       }
+
+      /// Append the material state to the output components: groups of
+      /// scalars <p>_xx, <p>_xy (, <p>_yx), <p>_yy become one dim x dim
+      /// tensor, the others stay scalars; @p source receives the state
+      /// index of each appended component.
+      template <int dim>
+      void
+      state_layout(const std::vector<std::string> &state_names,
+                   std::vector<std::string>       &names,
+                   Ranges                         &ranges,
+                   std::vector<unsigned int>      &source)
+      {
+        const auto index = [&state_names](const std::string &n) {
+          const auto it = std::find(state_names.begin(), state_names.end(), n);
+          return it == state_names.end() ?
+                   numbers::invalid_unsigned_int :
+                   static_cast<unsigned int>(it - state_names.begin());
+        };
+        std::vector<bool> used(state_names.size(), false);
+        for (unsigned int k = 0; k < state_names.size(); ++k)
+          {
+            const std::string &n = state_names[k];
+            if (used[k] || n.size() < 4 || n.substr(n.size() - 3) != "_xx")
+              continue;
+            const std::string         prefix = n.substr(0, n.size() - 3);
+            std::vector<unsigned int> components;
+            for (unsigned int c = 0; c < dim * dim; ++c)
+              {
+                const auto ind =
+                  Tensor<2, dim>::unrolled_to_component_indices(c);
+                const std::string suffix = std::string("_") +
+                                           component_suffix[ind[0]] +
+                                           component_suffix[ind[1]];
+                unsigned int j = index(prefix + suffix);
+                if (j == numbers::invalid_unsigned_int && ind[0] > ind[1])
+                  j = index(prefix + "_" + component_suffix[ind[1]] +
+                            component_suffix[ind[0]]); // symmetric
+                components.push_back(j);
+              }
+            if (std::find(components.begin(),
+                          components.end(),
+                          numbers::invalid_unsigned_int) != components.end())
+              continue; // not a complete tensor: scalars
+            ranges.emplace_back(
+              names.size(),
+              names.size() + dim * dim - 1,
+              prefix,
+              DataComponentInterpretation::component_is_part_of_tensor);
+            for (unsigned int c = 0; c < dim * dim; ++c)
+              {
+                const auto ind =
+                  Tensor<2, dim>::unrolled_to_component_indices(c);
+                names.push_back(prefix + "_" + component_suffix[ind[0]] +
+                                component_suffix[ind[1]]);
+                source.push_back(components[c]);
+                used[components[c]] = true;
+              }
+          }
+        for (unsigned int k = 0; k < state_names.size(); ++k)
+          if (!used[k])
+            {
+              names.push_back(state_names[k]);
+              source.push_back(k);
+            }
+      }
     } // namespace
 
 
@@ -224,11 +289,12 @@ namespace psmpm
         "stress",
         DataComponentInterpretation::component_is_part_of_tensor);
 
-      const unsigned int first_state = names.size();
-      const unsigned int n_state     = particles.n_state();
-      for (const auto &name : particles.get_state_names())
-        names.push_back(name);
-
+      // Material state: scalars named <p>_xx, <p>_xy, ... form a tensor
+      // (a symmetric one if <p>_yx is missing), written as such; the rest
+      // are scalars. source[k]: the state index of output component k.
+      const unsigned int        first_state = names.size();
+      std::vector<unsigned int> source;
+      state_layout<dim>(particles.get_state_names(), names, ranges, source);
       const double rank = Utilities::MPI::this_mpi_process(comm);
       std::vector<DataOutBase::Patch<0, dim>> patches(particles.size());
       for (std::size_t i = 0; i < particles.size(); ++i)
@@ -258,8 +324,8 @@ namespace psmpm
                 particles.stress[i][ind[0]][ind[1]];
             }
           const double *state = particles.state_of(i);
-          for (unsigned int k = 0; k < n_state; ++k)
-            patch.data(first_state + k, 0) = state[k];
+          for (unsigned int k = 0; k < source.size(); ++k)
+            patch.data(first_state + k, 0) = state[source[k]];
         }
 
       particle_records.emplace_back(time,
