@@ -332,7 +332,15 @@ check_particles(std::ostream &out)
   std::filesystem::create_directories(dir);
 
   Particles::ParticleSet<dim> particles;
-  particles.set_state_names({"plastic_strain", "stress_zz"});
+  // "strain_xx", "strain_xy" (and "strain_yy" in 2D) form a symmetric
+  // tensor in the output; the other two stay scalars.
+  std::vector<std::string> state_names = {"plastic_strain",
+                                          "strain_xx",
+                                          "stress_zz"};
+  if (dim == 2)
+    for (const std::string n : {"strain_xy", "strain_yy"})
+      state_names.push_back(n);
+  particles.set_state_names(state_names);
   for (unsigned int i = 0; i < 3; ++i)
     {
       Point<dim> x;
@@ -341,8 +349,8 @@ check_particles(std::ostream &out)
       for (unsigned int a = 0; a < dim; ++a)
         for (unsigned int b = a; b < dim; ++b)
           particles.stress[i][a][b] = 1 + i + 10 * a + 100 * b;
-      particles.state_of(i)[0] = i;
-      particles.state_of(i)[1] = -1. * i;
+      for (unsigned int k = 0; k < state_names.size(); ++k)
+        particles.state_of(i)[k] = k == 2 ? -1. * i : 100 * k + i;
     }
 
   Postprocess::OutputWriter<dim> writer(dir, MPI_COMM_WORLD, 1);
@@ -355,7 +363,25 @@ check_particles(std::ostream &out)
   const std::vector<float> stress = read_floats(vtu, "Name=\"stress\"");
   const std::vector<float> id     = read_floats(vtu, "Name=\"id\"");
   const std::vector<float> state  = read_floats(vtu, "Name=\"stress_zz\"");
+  const std::vector<float> strain = read_floats(vtu, "Name=\"strain\"");
   PSMPM_CHECK(out, stress.size() == 27);
+  PSMPM_CHECK(out, strain.size() == 27);
+  PSMPM_CHECK(out, vtu.find("Name=\"strain_xx\"") == std::string::npos);
+  PSMPM_CHECK(out, read_floats(vtu, "Name=\"plastic_strain\"").size() == 3);
+  {
+    // strain_xx (state 1) at (0,0); in 2D strain_xy (state 3) at (0,1)
+    // and (1,0), strain_yy (state 4) at (1,1).
+    bool tensor_ok = true;
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        tensor_ok = tensor_ok && strain[9 * i] == 100 + i;
+        if (dim == 2)
+          tensor_ok = tensor_ok && strain[9 * i + 1] == 300 + i &&
+                      strain[9 * i + 3] == 300 + i &&
+                      strain[9 * i + 4] == 400 + i;
+      }
+    PSMPM_CHECK(out, tensor_ok);
+  }
   bool ok = (id.size() == 3 && state.size() == 3);
   for (unsigned int i = 0; i < 3 && ok; ++i)
     {
