@@ -39,34 +39,6 @@ namespace psmpm
         {2, 5, 6, 11, 18, 15},
         {5, 0, 6, 12, 13, 18}};
 
-      /**
-       * The 7-point rule of degree 5 on a triangle (Radon; the same as
-       * QGaussSimplex<2>(3) up to the order of the points), in barycentric
-       * coordinates, weights summing to 1. Kept in the order and form the
-       * L2 projection used before it asked the space for its quadrature,
-       * so that its results did not change.
-       */
-      struct TriangleRule
-      {
-        std::array<std::array<double, 3>, 7> points;
-        std::array<double, 7>                weights;
-        TriangleRule()
-        {
-          const double s  = std::sqrt(15.);
-          const double a1 = (6 - s) / 21, b1 = (9 + 2 * s) / 21;
-          const double a2 = (6 + s) / 21, b2 = (9 - 2 * s) / 21;
-          const double w1 = (155 - s) / 1200, w2 = (155 + s) / 1200;
-          points  = {{{{1. / 3, 1. / 3, 1. / 3}},
-                      {{a1, a1, b1}},
-                      {{a1, b1, a1}},
-                      {{b1, a1, a1}},
-                      {{a2, a2, b2}},
-                      {{a2, b2, a2}},
-                      {{b2, a2, a2}}}};
-          weights = {{9. / 40, w1, w1, w1, w2, w2, w2}};
-        }
-      };
-
       std::string
       describe_vertex(const unsigned int index, const Point<2> &p)
       {
@@ -788,7 +760,7 @@ namespace psmpm
                       dof_handler.get_triangulation().n_active_cells(),
                   ExcMessage("PowellSabin::cell_quadrature: call reinit() "
                              "with this mesh first."));
-      static const TriangleRule rule;
+      static const Mesh::TriangleRule rule;
       const auto               &c = ps_refinement.cell(cell);
       std::vector<Point<2>>     points;
       std::vector<double>       weights;

@@ -150,11 +150,17 @@ namespace psmpm
       prm.enter_subsection("Body force");
       const auto g = Utilities::string_to_double(split(prm.get("Gravity")));
       prm.leave_subsection();
-      AssertThrow(g.size() == dim,
+      // The default "0, 0" must work in 1D too: components beyond dim
+      // are accepted only if they are zero.
+      bool fits = g.size() >= dim;
+      for (unsigned int d = dim; d < g.size(); ++d)
+        fits = fits && g[d] == 0;
+      AssertThrow(fits,
                   ExcMessage("Body force/Gravity = " + prm_value(g[0]) +
                              (g.size() > 1 ? ", " + prm_value(g[1]) : "") +
                              ": needs " + std::to_string(dim) +
-                             " component(s) in " + std::to_string(dim) + "D."));
+                             " component(s) in " + std::to_string(dim) +
+                             "D (further ones must be 0)."));
       for (unsigned int d = 0; d < dim; ++d)
         state.gravity[d] = g[d];
 

@@ -31,29 +31,6 @@ namespace psmpm
   {
     namespace
     {
-      /// Dunavant's 7-point rule, exact for degree 5, on a triangle in
-      /// barycentric coordinates; weights sum to one.
-      struct TriangleRule
-      {
-        std::array<std::array<double, 3>, 7> points;
-        std::array<double, 7>                weights;
-        TriangleRule()
-        {
-          const double s  = std::sqrt(15.);
-          const double a1 = (6 - s) / 21, b1 = (9 + 2 * s) / 21;
-          const double a2 = (6 + s) / 21, b2 = (9 - 2 * s) / 21;
-          const double w1 = (155 - s) / 1200, w2 = (155 + s) / 1200;
-          points  = {{{{1. / 3, 1. / 3, 1. / 3}},
-                      {{a1, a1, b1}},
-                      {{a1, b1, a1}},
-                      {{b1, a1, a1}},
-                      {{a2, a2, b2}},
-                      {{a2, b2, a2}},
-                      {{b2, a2, a2}}}};
-          weights = {{9. / 40, w1, w1, w1, w2, w2, w2}};
-        }
-      };
-
       Point<2>
       combine(const std::array<Point<2>, 3> &t, const std::array<double, 3> &l)
       {
@@ -220,7 +197,7 @@ namespace psmpm
       SparseMatrix<double> mass(sparsity);
       Vector<double>       rhs(n_dofs), solution(n_dofs);
 
-      const TriangleRule                   rule;
+      const Mesh::TriangleRule                   rule;
       std::vector<double>                  values(dofs_per_cell);
       std::vector<types::global_dof_index> dofs(dofs_per_cell);
       FullMatrix<double>                   cell_matrix(dofs_per_cell);

@@ -68,6 +68,34 @@ main(int argc, char **argv)
              {"missing parameter file", "", {"no_such_file.prm"}, {"no_such_file.prm"}},
              {"bad --set", head, {"--set", "Mesh/Blocks x=-3"}, {"Blocks x"}},
              {"unknown option", head, {"--frobnicate"}, {"--frobnicate"}},
+             {"dimension 3",
+              head + "subsection Geometry\n set Dimension = 3\nend\n",
+              {},
+              {"Dimension", "case.prm"}},
+             {"Powell-Sabin in 1D",
+              head + "subsection Geometry\n set Dimension = 1\nend\n"
+                     "subsection Basis\n set Type = powell-sabin\nend\n",
+              {},
+              {"Basis/Type", "1D", "case.prm"}},
+             {"Gmsh mesh in 1D",
+              head + "subsection Geometry\n set Dimension = 1\nend\n"
+                     "subsection Mesh\n set Type = gmsh\nend\n",
+              {},
+              {"Mesh/Type", "1D", "case.prm"}},
+             {"2D gravity in 1D",
+              head + "subsection Geometry\n set Dimension = 1\nend\n"
+                     "subsection Initial conditions\n set Velocity = 0\nend\n"
+                     "subsection Body force\n set Gravity = 0, -9.81\nend\n",
+              {},
+              {"Body force/Gravity", "1D", "case.prm"}},
+             {"unknown material model",
+              head + "subsection Material\n set Model = plasticine\nend\n",
+              {},
+              {"Model", "plasticine", "case.prm"}},
+             {"unknown transfer scheme",
+              head + "subsection Transfer\n set Scheme = flip\nend\n",
+              {},
+              {"Scheme", "flip", "case.prm"}},
   };
   for (const auto &c : cases)
     {

@@ -19,7 +19,8 @@ namespace psmpm
     /**
      * Normalised quadratic Powell-Sabin B-splines: three C1 piecewise
      * quadratic functions per mesh vertex, built exactly as in
-     * doc/powell_sabin.md and /work/shared/docs/powell-sabin-splines.md
+     * doc/powell_sabin.md (the standard construction of Dierckx and of
+     * Speleers et al., as the thesis uses it)
      * (incenter refinement, smallest boundary-aligned control triangles,
      * triplets, Bezier ordinates on the six sub-triangles of every cell).
      *

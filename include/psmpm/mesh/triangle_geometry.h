@@ -9,6 +9,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <cmath>
 
 namespace psmpm
 {
@@ -122,6 +123,34 @@ namespace psmpm
       m.gradient[1][0] = 1 / length;
       return m;
     }
+
+    /**
+     * The 7-point rule of degree 5 on a triangle (Radon/Dunavant; the same
+     * as QGaussSimplex<2>(3) up to the order of the points) in barycentric
+     * coordinates, weights summing to 1: the Powell-Sabin cell quadrature
+     * and the L2 projection use it on the PS sub-triangles (the order and
+     * form are kept so that their results stay as they were).
+     */
+    struct TriangleRule
+    {
+      std::array<std::array<double, 3>, 7> points;
+      std::array<double, 7>                weights;
+      TriangleRule()
+      {
+        const double s  = std::sqrt(15.);
+        const double a1 = (6 - s) / 21, b1 = (9 + 2 * s) / 21;
+        const double a2 = (6 + s) / 21, b2 = (9 - 2 * s) / 21;
+        const double w1 = (155 - s) / 1200, w2 = (155 + s) / 1200;
+        points  = {{{{1. / 3, 1. / 3, 1. / 3}},
+                    {{a1, a1, b1}},
+                    {{a1, b1, a1}},
+                    {{b1, a1, a1}},
+                    {{a2, a2, b2}},
+                    {{a2, b2, a2}},
+                    {{b2, a2, a2}}}};
+        weights = {{9. / 40, w1, w1, w1, w2, w2, w2}};
+      }
+    };
   } // namespace Mesh
 } // namespace psmpm
 
