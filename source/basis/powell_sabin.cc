@@ -761,9 +761,9 @@ namespace psmpm
                   ExcMessage("PowellSabin::cell_quadrature: call reinit() "
                              "with this mesh first."));
       static const Mesh::TriangleRule rule;
-      const auto               &c = ps_refinement.cell(cell);
-      std::vector<Point<2>>     points;
-      std::vector<double>       weights;
+      const auto                     &c = ps_refinement.cell(cell);
+      std::vector<Point<2>>           points;
+      std::vector<double>             weights;
       points.reserve(6 * 7);
       weights.reserve(6 * 7);
       for (unsigned int s = 0; s < 6; ++s)

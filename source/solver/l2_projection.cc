@@ -197,7 +197,7 @@ namespace psmpm
       SparseMatrix<double> mass(sparsity);
       Vector<double>       rhs(n_dofs), solution(n_dofs);
 
-      const Mesh::TriangleRule                   rule;
+      const Mesh::TriangleRule             rule;
       std::vector<double>                  values(dofs_per_cell);
       std::vector<types::global_dof_index> dofs(dofs_per_cell);
       FullMatrix<double>                   cell_matrix(dofs_per_cell);

@@ -74,18 +74,18 @@ main(int argc, char **argv)
               {"Dimension", "case.prm"}},
              {"Powell-Sabin in 1D",
               head + "subsection Geometry\n set Dimension = 1\nend\n"
-                     "subsection Basis\n set Type = powell-sabin\nend\n",
+                              "subsection Basis\n set Type = powell-sabin\nend\n",
               {},
               {"Basis/Type", "1D", "case.prm"}},
              {"Gmsh mesh in 1D",
               head + "subsection Geometry\n set Dimension = 1\nend\n"
-                     "subsection Mesh\n set Type = gmsh\nend\n",
+                              "subsection Mesh\n set Type = gmsh\nend\n",
               {},
               {"Mesh/Type", "1D", "case.prm"}},
              {"2D gravity in 1D",
               head + "subsection Geometry\n set Dimension = 1\nend\n"
-                     "subsection Initial conditions\n set Velocity = 0\nend\n"
-                     "subsection Body force\n set Gravity = 0, -9.81\nend\n",
+                              "subsection Initial conditions\n set Velocity = 0\nend\n"
+                              "subsection Body force\n set Gravity = 0, -9.81\nend\n",
               {},
               {"Body force/Gravity", "1D", "case.prm"}},
              {"unknown material model",
