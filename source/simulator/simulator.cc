@@ -122,11 +122,6 @@ namespace psmpm
       particle_generator.check_count(mesh_generator);
       state.material = Material::Material<dim>::create(prm);
       grid_parameters.parse_parameters(prm);
-      AssertThrow(
-        Solver::MassStrategyRegistry<dim>::instance().has(grid_parameters.type),
-        ExcMessage("Mass matrix/Type = " + grid_parameters.type +
-                   ": not available in " + std::to_string(dim) + "D."));
-
       prm.enter_subsection("Basis");
       basis_name = prm.get("Type");
       prm.leave_subsection();
