@@ -33,6 +33,7 @@ namespace psmpm
         f(particles.displacement);
         f(particles.velocity);
         f(particles.stress);
+        f(particles.affine);
       }
 
       constexpr unsigned int
@@ -76,6 +77,7 @@ namespace psmpm
       displacement.emplace_back();
       velocity.emplace_back();
       stress.emplace_back();
+      affine.emplace_back();
       state.resize(state.size() + n_state(), 0.);
     }
 
@@ -88,8 +90,10 @@ namespace psmpm
       static_assert(SymmetricTensor<2, dim>::n_independent_components ==
                       n_stress_components(dim),
                     "stress is packed by its independent components");
-      // id, mass, volume, density; four vectors; stress; state.
-      return 4 + 4 * dim + n_stress_components(dim) + n_state();
+      // id, mass, volume, density; four vectors; stress; state; affine
+      // matrix (last, so that the offsets of the others do not depend on
+      // it).
+      return 4 + 4 * dim + n_stress_components(dim) + n_state() + dim * dim;
     }
 
 
@@ -114,6 +118,9 @@ namespace psmpm
       for (unsigned int k = 0; k < n_stress_components(dim); ++k)
         buffer.push_back(stress[i].access_raw_entry(k));
       buffer.insert(buffer.end(), state_of(i), state_of(i) + n_state());
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int e = 0; e < dim; ++e)
+          buffer.push_back(affine[i][d][e]);
     }
 
 
@@ -149,6 +156,12 @@ namespace psmpm
             s.access_raw_entry(k) = next();
           stress.push_back(s);
           state.insert(state.end(), in, in + n_state());
+          in += n_state();
+          Tensor<2, dim> c;
+          for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int e = 0; e < dim; ++e)
+              c[d][e] = next();
+          affine.push_back(c);
         }
     }
 

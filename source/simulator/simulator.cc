@@ -264,7 +264,11 @@ namespace psmpm
                                  c + "' is not name=value."));
           constants[kv[0]] = Utilities::string_to_double(kv[1]);
         }
-      FunctionParser<dim> velocity(dim);
+      // The affine transfers start from the initial velocity gradient
+      // (C_p = grad v): fourth-order differences with h = 1e-4 are exact
+      // to round-off for the affine fields they must carry.
+      FunctionParser<dim> velocity(dim, 0., 1e-4);
+      velocity.set_formula(AutoDerivativeFunction<dim>::FourthOrder);
       try
         {
           velocity.initialize(dim == 1 ? "x" : "x,y",
@@ -272,8 +276,12 @@ namespace psmpm
                               constants);
           for (std::size_t i = 0; i < particles.size(); ++i)
             for (unsigned int d = 0; d < dim; ++d)
-              particles.velocity[i][d] =
-                velocity.value(particles.position[i], d);
+              {
+                particles.velocity[i][d] =
+                  velocity.value(particles.position[i], d);
+                particles.affine[i][d] =
+                  velocity.gradient(particles.position[i], d);
+              }
         }
       catch (const std::exception &e)
         {

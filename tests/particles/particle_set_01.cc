@@ -28,6 +28,9 @@ mark(Particles::ParticleSet<dim> &set, const std::size_t i)
     set.stress[i].access_raw_entry(k) = 30 * s + k;
   for (unsigned int k = 0; k < set.n_state(); ++k)
     set.state_of(i)[k] = 40 * s + k;
+  for (unsigned int d = 0; d < dim; ++d)
+    for (unsigned int e = 0; e < dim; ++e)
+      set.affine[i][d][e] = 50 * s + dim * d + e;
 }
 
 /// Whether particle @p i of @p a equals particle @p j of @p b (all but
@@ -45,6 +48,7 @@ same(const Particles::ParticleSet<dim> &a,
          a.initial_position[i] == b.initial_position[j] &&
          a.displacement[i] == b.displacement[j] &&
          a.velocity[i] == b.velocity[j] && a.stress[i] == b.stress[j] &&
+         a.affine[i] == b.affine[j] &&
          std::equal(a.state_of(i),
                     a.state_of(i) + a.n_state(),
                     b.state_of(j),
@@ -69,7 +73,8 @@ check(std::ofstream &out)
   for (std::size_t i = 0; i < set.size(); ++i)
     zero = zero && set.velocity[i].norm() == 0 &&
            set.displacement[i].norm() == 0 && set.stress[i].norm() == 0 &&
-           set.state_of(i)[0] == 0 && set.state_of(i)[1] == 0 &&
+           set.affine[i].norm() == 0 && set.state_of(i)[0] == 0 &&
+           set.state_of(i)[1] == 0 &&
            set.mass[i] == set.volume[i] * set.density[i];
   PSMPM_CHECK(out, zero);
   for (std::size_t i = 0; i < set.size(); ++i)

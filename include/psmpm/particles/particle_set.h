@@ -26,7 +26,8 @@ namespace psmpm
      * doc/design.md; ownership here follows the cell's subdomain.)
      *
      * Two parts: the kinematics every MPM needs (position, velocity,
-     * displacement, mass, volume, Cauchy stress, the cell), and a block of
+     * displacement, mass, volume, Cauchy stress, the cell, the affine
+     * velocity matrix of the affine transfers), and a block of
      * n_state() scalars per particle that belongs to the material model
      * (its names come from Material::state_names()). Every particle always
      * knows its cell (active cell index).
@@ -108,6 +109,9 @@ namespace psmpm
       std::vector<Tensor<1, dim>>          displacement;
       std::vector<Tensor<1, dim>>          velocity;
       std::vector<SymmetricTensor<2, dim>> stress; ///< Cauchy stress
+      /// Affine velocity matrix C_p of the affine transfers (APIC): the
+      /// particle carries v(x) = v_p + C_p (x - x_p). Zero for the others.
+      std::vector<Tensor<2, dim>> affine;
       /// Material state, n_state() per particle, particle-major.
       std::vector<double> state;
 
