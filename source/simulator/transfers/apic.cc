@@ -6,8 +6,6 @@
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
-#include <cstdlib>
-
 namespace psmpm
 {
   namespace Simulator
@@ -168,15 +166,10 @@ namespace psmpm
                       const SymmetricTensor<2, dim> &D,
                       const Tensor<2, dim>          &L)
         {
-          static const double threshold = [] {
-            const char *s = std::getenv("PSMPM_APIC_THRESHOLD");
-            return s ? std::atof(s) : 1e-3;
-          }();
-          const double   scale = trace(D);
+          const double   threshold = 1e-3;
+          const double   scale     = trace(D);
           Tensor<2, dim> C;
           if (!(scale > 0))
-            return L;
-          if (threshold >= 1)
             return L;
           for (const auto &[lambda, e] : eigenvectors(D))
             {
