@@ -135,9 +135,8 @@ namespace psmpm
       if (run.valid && ref.valid)
         {
           summary.set("oscillation.tip_mean_deflection_error",
-                      (run.mean - ref.mean) / std::abs(ref.mean));
-          summary.set("oscillation.period_error",
-                      (run.period - ref.period) / ref.period);
+                      run.mean / ref.mean - 1);
+          summary.set("oscillation.period_error", run.period / ref.period - 1);
         }
     }
   } // namespace Postprocess

@@ -44,8 +44,9 @@ namespace psmpm
        * Measure the run's @p x and the reference's @p x_reference (same
        * times) and write, under "oscillation.", tip_mean_deflection(_
        * reference, _error) and period(_reference, _error): the errors are
-       * relative and signed, (run - reference) / |reference|. Only what
-       * could be measured is written.
+       * relative and signed, run / reference - 1 (a positive mean
+       * deflection error: the run deflects more). Only what could be
+       * measured is written.
        */
       static void
       fill_summary(const std::vector<double> &t,
