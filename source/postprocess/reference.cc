@@ -35,32 +35,41 @@ namespace psmpm
 
     template <int dim>
     std::unique_ptr<Reference<dim>>
-    Reference<dim>::create(ParameterHandler              &prm,
-                           const Material::Material<dim> &material,
-                           const double                   length,
-                           const double                   height,
-                           const Tensor<1, dim>          &gravity)
+    Reference<dim>::create(
+      ParameterHandler                                &prm,
+      const Material::Material<dim>                   &material,
+      const double                                     length,
+      const double                                     height,
+      const Tensor<1, dim>                            &gravity,
+      const std::vector<double>                       &region,
+      const std::array<std::vector<std::string>, dim> &fixed)
     {
       prm.enter_subsection("Reference solution");
-      const std::string           type = prm.get("Type");
-      const ReferenceContext<dim> context{material,
-                                          length,
-                                          height,
-                                          gravity,
-                                          prm.get_double("Velocity amplitude"),
-                                          static_cast<unsigned int>(
-                                            prm.get_integer("ULFEM elements"))};
+      const std::string     type = prm.get("Type");
+      ReferenceContext<dim> context{material,
+                                    length,
+                                    height,
+                                    gravity,
+                                    prm.get_double("Velocity amplitude"),
+                                    static_cast<unsigned int>(
+                                      prm.get_integer("ULFEM elements")),
+                                    region,
+                                    fixed};
       prm.leave_subsection();
       if (type == "none")
         return nullptr;
-      AssertThrow(material.poisson_ratio == 0,
-                  ExcMessage("Reference solution/Type = " + type +
-                             " is a 1D solution and needs Material/Poisson's "
-                             "ratio = 0."));
-      return ReferenceRegistry<dim>::instance().create(
+      if (context.region.empty())
+        context.region = dim == 1 ? std::vector<double>{0, length} :
+                                    std::vector<double>{0, 0, length, height};
+      auto reference = ReferenceRegistry<dim>::instance().create(
         type,
         "Reference solution/Type (in " + std::to_string(dim) + "D)",
         context);
+      AssertThrow(!reference->one_dimensional() || material.poisson_ratio == 0,
+                  ExcMessage("Reference solution/Type = " + type +
+                             " is a 1D solution and needs Material/Poisson's "
+                             "ratio = 0."));
+      return reference;
     }
 
     template class Reference<1>;

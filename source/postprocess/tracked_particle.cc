@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/postprocess/oscillation.h>
 #include <psmpm/postprocess/tracked_particle.h>
 
 #include <cmath>
@@ -98,6 +99,17 @@ namespace psmpm
                   std::sqrt(velocity2 / history.size()));
       summary.set("errors.tracked_displacement_rms",
                   std::sqrt(displacement2 / history.size()));
+      if (reference.oscillates_about_equilibrium())
+        {
+          std::vector<double> t, x, x_reference;
+          for (const auto &r : history)
+            {
+              t.push_back(r[0]);
+              x.push_back(r[1]);
+              x_reference.push_back(r[3]);
+            }
+          Oscillation::fill_summary(t, x, x_reference, summary);
+        }
     }
 
     template class TrackedParticle<1>;

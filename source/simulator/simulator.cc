@@ -160,17 +160,19 @@ namespace psmpm
       for (unsigned int d = 0; d < dim; ++d)
         state.gravity[d] = g[d];
 
-      reference = Postprocess::Reference<dim>::create(prm,
-                                                      *state.material,
-                                                      mesh_generator.length,
-                                                      mesh_generator.height,
-                                                      state.gravity);
-
       prm.enter_subsection("Boundary conditions");
       const char *fixed_entries[] = {"Fixed x", "Fixed y"};
       for (unsigned int d = 0; d < dim; ++d)
         fixed_names[d] = split(prm.get(fixed_entries[d]));
       prm.leave_subsection();
+
+      reference = Postprocess::Reference<dim>::create(prm,
+                                                      *state.material,
+                                                      mesh_generator.length,
+                                                      mesh_generator.height,
+                                                      state.gravity,
+                                                      particle_generator.region,
+                                                      fixed_names);
 
       time_step_control.parse_parameters(prm);
 

@@ -20,7 +20,9 @@ namespace psmpm
      * The history of the particle that starts nearest to Output/Tracked
      * point, with the reference's, along the reference's axis:
      * tracked_particle.txt and the RMS of the differences over time (a
-     * grid-crossing noise measure) in summary.json.
+     * grid-crossing noise measure) in summary.json; for references that
+     * oscillate about an equilibrium also the mean and period of both
+     * (Oscillation).
      */
     template <int dim>
     class TrackedParticle
