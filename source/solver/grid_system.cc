@@ -48,6 +48,15 @@ namespace psmpm
                         "Relative bound M_ii / M_ii(full support) below which "
                         "a function counts as poorly supported (deactivate, "
                         "extrapolate).");
+      prm.declare_entry("Stabilization",
+                        "0.1",
+                        Patterns::Double(0),
+                        "Weight of the stabilised consistent strategies: "
+                        "gamma of 'ghost penalty' (gamma rho (1 - fill) "
+                        "int (u - Pu)^2 on face patches next to cells that "
+                        "are not filled), alpha of 'fictitious mass' (alpha "
+                        "rho (1 - fill) int N_k N_l on every cell); fill: "
+                        "particle mass over rho |cell|, at most 1.");
       MassStrategyRegistry<dim>::instance().declare_parameters(prm);
       prm.leave_subsection();
     }
@@ -62,6 +71,7 @@ namespace psmpm
       tolerance      = prm.get_double("Solver tolerance");
       max_iterations = prm.get_integer("Maximum iterations");
       preconditioner = prm.get("Preconditioner");
+      stabilization  = prm.get_double("Stabilization");
       prm.leave_subsection();
       AssertThrow(tolerance > 0 && tolerance < 1,
                   ExcMessage("Mass matrix/Solver tolerance = " +
@@ -92,7 +102,8 @@ namespace psmpm
       const std::array<std::set<types::boundary_id>, dim> &fixed,
       const double                                         density)
     {
-      owned = dof_handler.locally_owned_dofs();
+      this->density = density;
+      owned         = dof_handler.locally_owned_dofs();
       if (mass_strategy->needs_all_dofs())
         // Constraints may tie a vertex to one two cells away: keep every
         // DoF at hand (the mesh is replicated anyway).
@@ -205,10 +216,16 @@ namespace psmpm
     {
       DynamicSparsityPattern dsp(relevant);
       for (unsigned int d = 0; d < dim; ++d)
-        DoFTools::make_sparsity_pattern(dof_handler,
-                                        dsp,
-                                        active_constraints[d],
-                                        true);
+        if (mass_strategy->needs_face_couplings())
+          DoFTools::make_flux_sparsity_pattern(dof_handler,
+                                               dsp,
+                                               active_constraints[d],
+                                               true);
+        else
+          DoFTools::make_sparsity_pattern(dof_handler,
+                                          dsp,
+                                          active_constraints[d],
+                                          true);
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       for (unsigned int d = 0; d < dim; ++d)
         matrix[d].reinit(owned, owned, dsp, comm);
@@ -400,6 +417,7 @@ namespace psmpm
         }
       stats.min_relative_diagonal = Utilities::MPI::min(rmin, comm);
 
+      patches.clear();
       if (mass_strategy->prepare(*this, diagonal))
         build_sparsity();
       for (unsigned int d = 0; d < dim; ++d)
@@ -424,6 +442,15 @@ namespace psmpm
             }
           active_constraints[d].distribute_local_to_global(local,
                                                            dofs,
+                                                           matrix[d]);
+        }
+      for (const auto &patch : patches)
+        {
+          std::vector<types::global_dof_index> patch_dofs(patch.dofs.size());
+          for (unsigned int k = 0; k < patch.dofs.size(); ++k)
+            patch_dofs[k] = relevant_global[patch.dofs[k]];
+          active_constraints[d].distribute_local_to_global(patch.matrix,
+                                                           patch_dofs,
                                                            matrix[d]);
         }
       matrix[d].compress(VectorOperation::add);
