@@ -1,0 +1,238 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi.templates.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <psmpm/solver/grid_system.h>
+#include <psmpm/solver/mass_strategies/cell_fill.h>
+#include <psmpm/solver/mass_strategy.h>
+
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Solver
+  {
+    namespace
+    {
+      /**
+       * Volume ghost penalty (local projection stabilisation, Burman) of
+       * the particle mass matrix: for every face between two cells c, K
+       * whose functions all carry particle mass and of which one is not
+       * filled,
+       *
+       *   S_F(u, v) = gamma rho (1 - min(fill_c, fill_K))
+       *               int_{c u K} (u - P u)(v - P v),
+       *
+       * P the L2 projection onto the polynomials of the space's degree on
+       * the patch c u K (gamma: Mass matrix/Stabilization; fill: particle
+       * mass over rho |cell|, clipped to [0, 1]). S vanishes for every
+       * polynomial of that degree (the space reproduces them), so
+       *  - constants: row sums, hence momentum, are those of the particle
+       *    matrix;
+       *  - affine fields (rigid rotation): the projection of an affine
+       *    particle velocity stays exact, as with the consistent matrix;
+       *  - filled cells: S = 0, the consistent matrix exactly.
+       * What S controls is the deviation of a function on a sparse cell
+       * from the polynomial that its well filled neighbour fixes, so a
+       * function whose support holds a single particle at its edge is no
+       * longer free: the matrix stays symmetric positive definite with a
+       * bounded condition number. Patch matrices depend on the mesh only
+       * and are computed once; each step only weights them.
+       */
+      template <int dim>
+      class GhostPenalty : public MassStrategy<dim>
+      {
+      public:
+        bool
+        needs_face_couplings() const override
+        {
+          return true;
+        }
+
+        bool
+        prepare(GridSystem<dim> &grid, const std::vector<double> &) override
+        {
+          const double gamma = grid.parameters.stabilization;
+          if (gamma == 0)
+            return false;
+          if (faces.empty())
+            compute_face_patches(grid);
+          std::vector<double> fill = cell_fill(grid, measure);
+          {
+            std::vector<double> all(fill.size());
+            Utilities::MPI::max(fill, grid.get_communicator(), all);
+            fill.swap(all);
+          }
+          const auto  &active = grid.lumped_mass();
+          const double rho    = grid.reference_density();
+          auto        &blocks = grid.patch_blocks();
+          std::vector<bool> treated(active.size(), false);
+          for (const auto &f : faces)
+            {
+              const double w =
+                gamma * rho * (1. - std::min(fill[f.cells[0]], fill[f.cells[1]]));
+              if (!(w > 0))
+                continue;
+              bool all_active = true;
+              for (const unsigned int l : f.dofs)
+                all_active = all_active && active[l] > 0;
+              if (!all_active)
+                continue;
+              typename GridSystem<dim>::PatchBlock b;
+              b.dofs = f.dofs;
+              b.matrix.reinit(f.S.m(), f.S.n());
+              b.matrix.add(w, f.S);
+              blocks.push_back(std::move(b));
+              for (const unsigned int l : f.dofs)
+                treated[l] = true;
+            }
+          unsigned int n_treated = 0;
+          const auto  &global    = grid.relevant_global_indices();
+          for (unsigned int l = 0; l < treated.size(); ++l)
+            n_treated +=
+              treated[l] && grid.locally_owned_dofs().is_element(global[l]);
+          grid.set_n_treated_dofs(
+            Utilities::MPI::sum(n_treated, grid.get_communicator()));
+          return false;
+        }
+
+      private:
+        struct Face
+        {
+          std::array<unsigned int, 2> cells;
+          std::vector<unsigned int>   dofs; ///< local relevant, unique
+          FullMatrix<double>          S;    ///< int (u - Pu)(v - Pv)
+        };
+
+        /// Monomials of degree <= k in (x - x0) / h.
+        static std::vector<double>
+        monomials(const Point<dim>  &x,
+                  const Point<dim>  &x0,
+                  const double       h,
+                  const unsigned int k)
+        {
+          std::vector<double> r;
+          const Tensor<1, dim> y = (x - x0) / h;
+          if (dim == 1)
+            for (unsigned int a = 0; a <= k; ++a)
+              r.push_back(std::pow(y[0], a));
+          else
+            for (unsigned int total = 0; total <= k; ++total)
+              for (unsigned int a = 0; a <= total; ++a)
+                r.push_back(std::pow(y[0], total - a) *
+                            std::pow(y[dim - 1], a));
+          return r;
+        }
+
+        /// One patch per face with an owned cell (each face once over all
+        /// ranks: by the smaller active index if both are owned, else by
+        /// the smaller subdomain).
+        void
+        compute_face_patches(const GridSystem<dim> &grid)
+        {
+          const auto        &space = grid.get_space();
+          const auto        &dh    = grid.get_dof_handler();
+          const auto        &rel   = grid.relevant_dofs();
+          const unsigned int n     = grid.dofs_per_cell;
+          const unsigned int k     = space.degree();
+          std::vector<types::global_dof_index> dofs(n);
+          std::vector<double>                  values(n);
+          for (const auto &cell : dh.active_cell_iterators())
+            {
+              if (!cell->is_locally_owned())
+                continue;
+              for (const auto f : cell->face_indices())
+                {
+                  if (cell->at_boundary(f))
+                    continue;
+                  const auto other = cell->neighbor(f);
+                  const bool mine =
+                    other->is_locally_owned() ?
+                      cell->active_cell_index() < other->active_cell_index() :
+                      cell->subdomain_id() < other->subdomain_id();
+                  if (!mine)
+                    continue;
+                  Face face;
+                  face.cells = {cell->active_cell_index(),
+                                other->active_cell_index()};
+                  // Patch DoFs and, per cell, the map cell DoF -> patch.
+                  std::array<std::vector<unsigned int>, 2> map;
+                  std::vector<types::global_dof_index>      patch;
+                  for (unsigned int s = 0; s < 2; ++s)
+                    {
+                      (s == 0 ? cell : other)->get_dof_indices(dofs);
+                      for (const auto g : dofs)
+                        {
+                          auto it = std::find(patch.begin(), patch.end(), g);
+                          map[s].push_back(it - patch.begin());
+                          if (it == patch.end())
+                            patch.push_back(g);
+                        }
+                    }
+                  for (const auto g : patch)
+                    face.dofs.push_back(rel.index_within_set(g));
+                  const unsigned int m = patch.size();
+                  // Polynomials centred at the face, scaled by the patch.
+                  const Point<dim> x0 =
+                    (cell->center() + other->center()) / 2.;
+                  const double     h  = std::max(cell->diameter(),
+                                            other->diameter());
+                  const unsigned int np =
+                    monomials(x0, x0, h, k).size();
+                  FullMatrix<double> Mw(m, m), B(np, m), G(np, np);
+                  for (unsigned int s = 0; s < 2; ++s)
+                    {
+                      const unsigned int c = face.cells[s];
+                      const Quadrature<dim> q = space.cell_quadrature(dh, c);
+                      for (unsigned int i = 0; i < q.size(); ++i)
+                        {
+                          space.evaluate(c, q.point(i), values.data(), nullptr);
+                          const auto   p = monomials(q.point(i), x0, h, k);
+                          const double w = q.weight(i);
+                          for (unsigned int a = 0; a < n; ++a)
+                            {
+                              for (unsigned int b = 0; b < n; ++b)
+                                Mw(map[s][a], map[s][b]) +=
+                                  w * values[a] * values[b];
+                              for (unsigned int r = 0; r < np; ++r)
+                                B(r, map[s][a]) += w * p[r] * values[a];
+                            }
+                          for (unsigned int r = 0; r < np; ++r)
+                            for (unsigned int t = 0; t < np; ++t)
+                              G(r, t) += w * p[r] * p[t];
+                        }
+                    }
+                  // S = Mw - B^T G^-1 B.
+                  G.gauss_jordan();
+                  FullMatrix<double> GB(np, m);
+                  G.mmult(GB, B);
+                  face.S = Mw;
+                  FullMatrix<double> BtGB(m, m);
+                  B.Tmmult(BtGB, GB);
+                  face.S.add(-1., BtGB);
+                  // Exact symmetry.
+                  for (unsigned int a = 0; a < m; ++a)
+                    for (unsigned int b = a + 1; b < m; ++b)
+                      face.S(a, b) = face.S(b, a) =
+                        0.5 * (face.S(a, b) + face.S(b, a));
+                  faces.push_back(std::move(face));
+                }
+            }
+        }
+
+        std::vector<Face>   faces;
+        std::vector<double> measure;
+      };
+    } // namespace
+
+    RegisterForDims<MassStrategyRegistry, GhostPenalty> register_ghost_penalty(
+      "ghost penalty",
+      "consistent particle mass plus gamma rho (1 - fill) int (u - Pu)^2 on "
+      "the two cells of each face next to a cell that is not filled (P: "
+      "polynomials of the space's degree on the pair; gamma = "
+      "Stabilization); exact for polynomials, momentum kept");
+  } // namespace Solver
+} // namespace psmpm
