@@ -49,7 +49,7 @@ namespace psmpm
                         "a function counts as poorly supported (deactivate, "
                         "extrapolate).");
       prm.declare_entry("Stabilization",
-                        "0.1",
+                        "1",
                         Patterns::Double(0),
                         "Weight of the stabilised consistent strategies: "
                         "gamma of 'ghost penalty' (gamma rho (1 - fill) "
@@ -216,16 +216,35 @@ namespace psmpm
     {
       DynamicSparsityPattern dsp(relevant);
       for (unsigned int d = 0; d < dim; ++d)
-        if (mass_strategy->needs_face_couplings())
-          DoFTools::make_flux_sparsity_pattern(dof_handler,
-                                               dsp,
-                                               active_constraints[d],
-                                               true);
-        else
-          DoFTools::make_sparsity_pattern(dof_handler,
-                                          dsp,
-                                          active_constraints[d],
-                                          true);
+        DoFTools::make_sparsity_pattern(dof_handler,
+                                        dsp,
+                                        active_constraints[d],
+                                        true);
+      if (mass_strategy->needs_neighbor_couplings())
+        {
+          // Every DoF of the cells around a vertex with every other: the
+          // couplings of patch blocks over two cells that share a vertex.
+          std::vector<types::global_dof_index> dofs(dofs_per_cell);
+          std::vector<std::vector<types::global_dof_index>> cell_dofs(n_cells);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(dofs);
+              cell_dofs[cell->active_cell_index()] = dofs;
+            }
+          for (const auto &around : vertices.cells)
+            {
+              std::vector<types::global_dof_index> patch;
+              for (const unsigned int c : around)
+                patch.insert(patch.end(),
+                             cell_dofs[c].begin(),
+                             cell_dofs[c].end());
+              std::sort(patch.begin(), patch.end());
+              patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+              for (const auto i : patch)
+                if (relevant.is_element(i))
+                  dsp.add_entries(i, patch.begin(), patch.end(), true);
+            }
+        }
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       for (unsigned int d = 0; d < dim; ++d)
         matrix[d].reinit(owned, owned, dsp, comm);

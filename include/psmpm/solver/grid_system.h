@@ -56,7 +56,7 @@ namespace psmpm
         double       threshold      = 0.05;
         /// Fictitious mass fraction alpha of the stabilised strategies
         /// (Mass matrix/Stabilization).
-        double stabilization = 0.1;
+        double stabilization = 1;
       };
 
       struct SolveStatistics

@@ -55,9 +55,10 @@ namespace psmpm
       }
 
       /// true if the strategy adds patch blocks that couple the DoFs of two
-      /// face neighbours (the sparsity then holds face couplings).
+      /// cells sharing a vertex (the sparsity then couples every DoF of the
+      /// cells around a vertex with every other).
       virtual bool
-      needs_face_couplings() const
+      needs_neighbor_couplings() const
       {
         return false;
       }

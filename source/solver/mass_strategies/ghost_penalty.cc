@@ -10,6 +10,7 @@
 #include <psmpm/solver/mass_strategy.h>
 
 #include <cmath>
+#include <set>
 
 namespace psmpm
 {
@@ -19,15 +20,15 @@ namespace psmpm
     {
       /**
        * Volume ghost penalty (local projection stabilisation, Burman) of
-       * the particle mass matrix: for every face between two cells c, K
-       * whose functions all carry particle mass and of which one is not
-       * filled,
+       * the particle mass matrix: for every pair of cells c, K that share
+       * a vertex, whose functions all carry particle mass and of which one
+       * is not filled,
        *
-       *   S_F(u, v) = gamma rho (1 - min(fill_c, fill_K))
-       *               int_{c u K} (u - P u)(v - P v),
+       *   S_cK(u, v) = gamma rho (1 - min(fill_c, fill_K))
+       *                int_{c u K} (u - P u)(v - P v),
        *
        * P the L2 projection onto the polynomials of the space's degree on
-       * the patch c u K (gamma: Mass matrix/Stabilization; fill: particle
+       * the pair c u K (gamma: Mass matrix/Stabilization; fill: particle
        * mass over rho |cell|, clipped to [0, 1]). S vanishes for every
        * polynomial of that degree (the space reproduces them), so
        *  - constants: row sums, hence momentum, are those of the particle
@@ -39,7 +40,9 @@ namespace psmpm
        * from the polynomial that its well filled neighbour fixes, so a
        * function whose support holds a single particle at its edge is no
        * longer free: the matrix stays symmetric positive definite with a
-       * bounded condition number. Patch matrices depend on the mesh only
+       * bounded condition number. Pairs across a vertex, not only across
+       * a face, because a particle can enter an empty cell through a
+       * vertex (criss-cross meshes). Pair matrices depend on the mesh only
        * and are computed once; each step only weights them.
        */
       template <int dim>
@@ -47,7 +50,7 @@ namespace psmpm
       {
       public:
         bool
-        needs_face_couplings() const override
+        needs_neighbor_couplings() const override
         {
           return true;
         }
@@ -59,7 +62,7 @@ namespace psmpm
           if (gamma == 0)
             return false;
           if (faces.empty())
-            compute_face_patches(grid);
+            compute_pair_patches(grid);
           std::vector<double> fill = cell_fill(grid, measure);
           {
             std::vector<double> all(fill.size());
@@ -127,11 +130,11 @@ namespace psmpm
           return r;
         }
 
-        /// One patch per face with an owned cell (each face once over all
-        /// ranks: by the smaller active index if both are owned, else by
-        /// the smaller subdomain).
+        /// One patch per pair of cells sharing a vertex, one of them owned
+        /// (each pair once over all ranks: the rank of the smaller
+        /// subdomain).
         void
-        compute_face_patches(const GridSystem<dim> &grid)
+        compute_pair_patches(const GridSystem<dim> &grid)
         {
           const auto        &space = grid.get_space();
           const auto        &dh    = grid.get_dof_handler();
@@ -140,21 +143,28 @@ namespace psmpm
           const unsigned int k     = space.degree();
           std::vector<types::global_dof_index> dofs(n);
           std::vector<double>                  values(n);
+          std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
+            grid.n_cells);
           for (const auto &cell : dh.active_cell_iterators())
+            cells[cell->active_cell_index()] = cell;
+          std::set<std::pair<unsigned int, unsigned int>> pairs;
+          for (const auto &around : grid.vertex_tables().cells)
+            for (const unsigned int a : around)
+              for (const unsigned int b : around)
+                if (a < b)
+                  pairs.emplace(a, b);
+          for (const auto &[a, b] : pairs)
             {
-              if (!cell->is_locally_owned())
-                continue;
-              for (const auto f : cell->face_indices())
-                {
-                  if (cell->at_boundary(f))
-                    continue;
-                  const auto other = cell->neighbor(f);
-                  const bool mine =
-                    other->is_locally_owned() ?
-                      cell->active_cell_index() < other->active_cell_index() :
-                      cell->subdomain_id() < other->subdomain_id();
-                  if (!mine)
-                    continue;
+              {
+                const auto &cell  = cells[a];
+                const auto &other = cells[b];
+                if (!cell->is_locally_owned() && !other->is_locally_owned())
+                  continue;
+                if (cell->is_locally_owned() != other->is_locally_owned() &&
+                    std::min(cell->subdomain_id(), other->subdomain_id()) !=
+                      Utilities::MPI::this_mpi_process(
+                        grid.get_communicator()))
+                  continue;
                   Face face;
                   face.cells = {cell->active_cell_index(),
                                 other->active_cell_index()};
@@ -231,7 +241,7 @@ namespace psmpm
     RegisterForDims<MassStrategyRegistry, GhostPenalty> register_ghost_penalty(
       "ghost penalty",
       "consistent particle mass plus gamma rho (1 - fill) int (u - Pu)^2 on "
-      "the two cells of each face next to a cell that is not filled (P: "
+      "each pair of cells sharing a vertex, one not filled (P: "
       "polynomials of the space's degree on the pair; gamma = "
       "Stabilization); exact for polynomials, momentum kept");
   } // namespace Solver
