@@ -475,8 +475,11 @@ namespace psmpm
       matrix[d].compress(VectorOperation::add);
       // A DoF whose support holds no particle has an empty row: give it
       // a unit diagonal so that its (zero) coefficient is well defined.
+      // (Rows of patch blocks, e.g. the ghost penalty, may hold a DoF
+      // without particle mass: it keeps its row.)
       for (const auto i : owned)
-        if (lumped[i] == 0 && !active_constraints[d].is_constrained(i))
+        if (lumped[i] == 0 && !active_constraints[d].is_constrained(i) &&
+            matrix[d].diag_element(i) == 0)
           matrix[d].set(i, i, 1.0);
       matrix[d].compress(VectorOperation::insert);
       if (parameters.preconditioner == "amg")

@@ -5,10 +5,10 @@
 // 2 x 2 criss-cross Powell-Sabin mesh of the unit square (rho = 1000):
 // A. the left half filled (64 particles per triangle at the centroids of
 //    an 8 x 8 split, so that the fill is 1), the right half empty but for
-//    ONE particle at distance eps from the far corner of its support
-//    (eps = 1e-1, 1e-2, 1e-3): the functions of three vertices are then
-//    supported by that one particle, the particle matrix has rank one
-//    there. Checked: every assembled matrix is symmetric; the consistent
+//    ONE particle that has just crossed x = 0.5, at distance eps from
+//    the edge (eps = 1e-1, 1e-2, 1e-3): the functions of the vertex
+//    (0.75, 0.25) are then supported by that one particle, at the edge of
+//    their support; the particle matrix has rank one there. Checked: every assembled matrix is symmetric; the consistent
 //    one is singular (Jacobi-scaled condition over the DoFs with particle
 //    mass above 1e10); `ghost penalty`, `fictitious mass` and
 //    `blended lumping` are
@@ -187,8 +187,10 @@ main(int argc, char **argv)
     return ps;
   };
 
-  // A. One particle at distance eps from the corner (0.75, 0.25) inside
-  // the triangle (1, 0), (1, 0.5), (0.75, 0.25).
+  // A. One particle that has just left the filled half: at distance eps
+  // from the edge x = 0.5 inside the triangle (0.5, 0), (0.5, 0.5),
+  // (0.75, 0.25), where the functions of (0.75, 0.25) have it at the edge
+  // of their support.
   const std::vector<std::string> types = {"consistent",
                                           "ghost penalty",
                                           "fictitious mass",
@@ -198,11 +200,11 @@ main(int argc, char **argv)
   for (const double eps : {1e-1, 1e-2, 1e-3})
     {
       auto ps = fill([](const Point<2> &c) { return c[0] < 0.5 ? 1. : 0.; });
-      const Point<2> x(0.75 + eps, 0.25);
+      const Point<2> x(0.5 + eps, 0.25);
       unsigned int   host = numbers::invalid_unsigned_int;
       for (const auto &cell : dh.active_cell_iterators())
-        if (cell->center()[0] > 0.75 && cell->center()[1] < 0.5 &&
-            cell->center()[1] > 0)
+        if (cell->center()[0] > 0.5 && cell->center()[0] < 0.6 &&
+            cell->center()[1] < 0.5)
           host = cell->active_cell_index();
       ps.push_back({host, x, rho * 0.25 * 0.25 / 64});
       for (const auto &type : types)

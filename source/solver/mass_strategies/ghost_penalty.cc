@@ -21,14 +21,14 @@ namespace psmpm
       /**
        * Volume ghost penalty (local projection stabilisation, Burman) of
        * the particle mass matrix: for every pair of cells c, K that share
-       * a vertex, whose functions all carry particle mass and of which one
-       * is not filled,
+       * a vertex, both holding particles and one not filled,
        *
        *   S_cK(u, v) = gamma rho (1 - min(fill_c, fill_K))
        *                int_{c u K} (u - P u)(v - P v),
        *
        * P the L2 projection onto the polynomials of the space's degree on
-       * the pair c u K (gamma: Mass matrix/Stabilization; fill: particle
+       * the pair c u K, for pairs of which both cells hold particles
+       * (gamma: Mass matrix/Stabilization; fill: particle
        * mass over rho |cell|, clipped to [0, 1]). S vanishes for every
        * polynomial of that degree (the space reproduces them), so
        *  - constants: row sums, hence momentum, are those of the particle
@@ -79,10 +79,14 @@ namespace psmpm
                 gamma * rho * (1. - std::min(fill[f.cells[0]], fill[f.cells[1]]));
               if (!(w > 0))
                 continue;
-              bool all_active = true;
-              for (const unsigned int l : f.dofs)
-                all_active = all_active && active[l] > 0;
-              if (!all_active)
+              // Both cells hold particles: the pair's polynomial is fixed
+              // by them (a pair of a filled and an empty cell would make
+              // the empty cell's functions follow a polynomial through
+              // nothing). All DoFs of the pair take part, also those
+              // without particle mass (a Powell-Sabin function can vanish
+              // at every particle of a cell it lives on): they follow the
+              // polynomial extension.
+              if (!(fill[f.cells[0]] > 0 && fill[f.cells[1]] > 0))
                 continue;
               typename GridSystem<dim>::PatchBlock b;
               b.dofs = f.dofs;
