@@ -218,7 +218,7 @@ main(int argc, char **argv)
               << filter(asymmetry(A), 1e-14) << ", lambda_min/lambda_max "
               << filter(lmin, 1e-10) << ", condition "
               << (cond > 1e10 ? std::string("> 1e10") :
-                                Utilities::to_string(cond, 0))
+                                Utilities::to_string(std::round(cond)))
               << std::endl;
           PSMPM_CHECK(out, asymmetry(A) < 1e-14);
         }
