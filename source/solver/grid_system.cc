@@ -46,7 +46,7 @@ namespace psmpm
                         "0.05",
                         Patterns::Double(0, 1),
                         "Relative bound M_ii / M_ii(full support) below which "
-                        "a function counts as poorly supported (deactivate, "
+                        "a function counts as poorly supported ("
                         "extrapolate).");
       prm.declare_entry("Stabilization",
                         "1",
