@@ -70,10 +70,9 @@ main(int argc, char **argv)
       App::declare_parameters(prm);
       prm.parse_input(std::string(PSMPM_SOURCE_DIR) +
                       "/prm/rotating_block.prm");
-      for (const std::string o :
-           {"Mass matrix/Type=" + type,
-            std::string("Mass matrix/Stabilization=10"),
-            "Time/End time=" + std::to_string(end_time)})
+      for (const std::string o : {"Mass matrix/Type=" + type,
+                                  std::string("Mass matrix/Stabilization=10"),
+                                  "Time/End time=" + std::to_string(end_time)})
         App::apply_override(prm, o);
       Simulator::Simulator<2> solver(MPI_COMM_WORLD);
       solver.quiet = true;
@@ -85,8 +84,7 @@ main(int argc, char **argv)
       std::filesystem::create_directories("run");
       const auto status = solver.run("run");
       out << type << ": "
-          << (status == Simulator::Status::completed ? "completed" :
-                                                       "unstable")
+          << (status == Simulator::Status::completed ? "completed" : "unstable")
           << std::endl;
       if (type == "consistent")
         {
@@ -109,16 +107,17 @@ main(int argc, char **argv)
 
   // The removed strategy: a clear error, not a run.
   std::string screen, errors;
-  const int   code = run_app({std::string(PSMPM_SOURCE_DIR) +
-                              "/prm/rotating_block.prm",
-                            "--set",
-                            "Output directory=run-deactivate",
-                            "--set",
-                            "Mass matrix/Type=deactivate"},
-                           screen,
-                           errors);
+  const int   code =
+    run_app({std::string(PSMPM_SOURCE_DIR) + "/prm/rotating_block.prm",
+             "--set",
+             "Output directory=run-deactivate",
+             "--set",
+             "Mass matrix/Type=deactivate"},
+            screen,
+            errors);
   out << "deactivate: exit code " << code << std::endl;
   PSMPM_CHECK(out, code != 0);
-  PSMPM_CHECK(out, errors.find("removed") != std::string::npos &&
-                     errors.find("pins the material") != std::string::npos);
+  PSMPM_CHECK(out,
+              errors.find("removed") != std::string::npos &&
+                errors.find("pins the material") != std::string::npos);
 }

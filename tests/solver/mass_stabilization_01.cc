@@ -8,12 +8,11 @@
 //    ONE particle that has just crossed x = 0.5, at distance eps from
 //    the edge (eps = 1e-1, 1e-2, 1e-3): the functions of the vertex
 //    (0.75, 0.25) are then supported by that one particle, at the edge of
-//    their support; the particle matrix has rank one there. Checked: every assembled matrix is symmetric; the consistent
-//    one is singular (Jacobi-scaled condition over the DoFs with particle
-//    mass above 1e10); `ghost penalty`, `fictitious mass` and
-//    `blended lumping` are
-//    positive definite with a condition number below 1e4 that does not
-//    grow as eps -> 0.
+//    their support; the particle matrix has rank one there. Checked: every
+//    assembled matrix is symmetric; the consistent one is singular
+//    (Jacobi-scaled condition over the DoFs with particle mass above 1e10);
+//    `ghost penalty`, `fictitious mass` and `blended lumping` are positive
+//    definite with a condition number below 1e4 that does not grow as eps -> 0.
 // B. every cell filled: both new strategies give the consistent matrix
 //    (to round-off).
 // C. every cell half filled: `ghost penalty` differs from the consistent
@@ -104,8 +103,8 @@ namespace
         A(i, j) = M.el(i, j);
     active.assign(N, false);
     for (unsigned int i = 0; i < N; ++i)
-      active[i] = grid.lumped_mass()[grid.relevant_dofs().index_within_set(
-                    i)] > 0;
+      active[i] =
+        grid.lumped_mass()[grid.relevant_dofs().index_within_set(i)] > 0;
     return A;
   }
 
@@ -133,9 +132,9 @@ namespace
     LAPACKFullMatrix<double> S(idx.size(), idx.size());
     for (unsigned int a = 0; a < idx.size(); ++a)
       for (unsigned int b = 0; b < idx.size(); ++b)
-        S(a, b) = A(idx[a], idx[b]) /
-                  std::sqrt(A(idx[a], idx[a]) * A(idx[b], idx[b]));
-    Vector<double> ev;
+        S(a, b) =
+          A(idx[a], idx[b]) / std::sqrt(A(idx[a], idx[a]) * A(idx[b], idx[b]));
+    Vector<double>     ev;
     FullMatrix<double> dummy;
     S.compute_eigenvalues_symmetric(-1e300, 1e300, 0, ev, dummy);
     const double lmin = *std::min_element(ev.begin(), ev.end());
@@ -158,12 +157,13 @@ main(int argc, char **argv)
   out << std::setprecision(3);
 
   Triangulation<2> tria;
-  Mesh::MeshGenerator<2>::make_blocks(tria,
-                                      Point<2>(0, 0),
-                                      Point<2>(1, 1),
-                                      2,
-                                      2,
-                                      Mesh::MeshGenerator<2>::Type::criss_cross);
+  Mesh::MeshGenerator<2>::make_blocks(
+    tria,
+    Point<2>(0, 0),
+    Point<2>(1, 1),
+    2,
+    2,
+    Mesh::MeshGenerator<2>::Type::criss_cross);
   const auto    space = Basis::create_space<2>("powell-sabin");
   DoFHandler<2> dh(tria);
   dh.distribute_dofs(space->dof_layout());
@@ -191,11 +191,11 @@ main(int argc, char **argv)
   // from the edge x = 0.5 inside the triangle (0.5, 0), (0.5, 0.5),
   // (0.75, 0.25), where the functions of (0.75, 0.25) have it at the edge
   // of their support.
-  const std::vector<std::string> types = {"consistent",
-                                          "ghost penalty",
-                                          "fictitious mass",
-                                          "blended lumping",
-                                          "partially lumped"};
+  const std::vector<std::string>             types = {"consistent",
+                                                      "ghost penalty",
+                                                      "fictitious mass",
+                                                      "blended lumping",
+                                                      "partially lumped"};
   std::map<std::string, std::vector<double>> conditions;
   for (const double eps : {1e-1, 1e-2, 1e-3})
     {
@@ -268,10 +268,8 @@ main(int argc, char **argv)
       }
     // The particle matrix of a half-filled mesh is half the exact one
     // (to quadrature error), so the relative difference is ~ alpha.
-    PSMPM_CHECK(out,
-                std::abs(differences[0] / differences[1] - 10) < 1e-8);
-    PSMPM_CHECK(out,
-                differences[0] > 0.9e-2 && differences[0] < 1.1e-2);
+    PSMPM_CHECK(out, std::abs(differences[0] / differences[1] - 10) < 1e-8);
+    PSMPM_CHECK(out, differences[0] > 0.9e-2 && differences[0] < 1.1e-2);
 
     // Ghost penalty: nonzero, but zero on affine fields (coefficients:
     // the field at the control points) and on constants (row sums).
@@ -291,15 +289,16 @@ main(int argc, char **argv)
       const double constant = Dv.l2_norm() / Mv.l2_norm();
       out << "C half filled, ghost penalty: |M - M_consistent| / "
              "|M_consistent| "
-          << frobenius(D) / frobenius(consistent)
-          << ", on an affine field " << filter(affine, 1e-12)
-          << ", on a constant " << filter(constant, 1e-12) << std::endl;
+          << frobenius(D) / frobenius(consistent) << ", on an affine field "
+          << filter(affine, 1e-12) << ", on a constant "
+          << filter(constant, 1e-12) << std::endl;
       PSMPM_CHECK(out, frobenius(D) > 1e-3 * frobenius(consistent));
       PSMPM_CHECK(out, affine < 1e-12 && constant < 1e-12);
     }
 
-    const auto blended = assemble("blended lumping", 0.1, *space, dh, ps, active);
-    double     row_error = 0, row_scale = 0;
+    const auto blended =
+      assemble("blended lumping", 0.1, *space, dh, ps, active);
+    double row_error = 0, row_scale = 0;
     for (unsigned int i = 0; i < blended.m(); ++i)
       {
         double a = 0, b = 0;

@@ -34,7 +34,7 @@ namespace psmpm
           const std::vector<double> fill = cell_fill(grid, measure);
           const auto               &dofs = grid.cell_dofs();
           auto                     &mass = grid.cell_arrays().mass;
-          std::vector<bool> treated(grid.lumped_mass().size(), false);
+          std::vector<bool>         treated(grid.lumped_mass().size(), false);
           for (const unsigned int c : grid.owned_cells())
             {
               const double theta = std::min(1., 2. * (1. - fill[c]));
@@ -51,8 +51,7 @@ namespace psmpm
                     M[l * n + k] -= m;
                     M[k * n + k] += m;
                     M[l * n + l] += m;
-                    treated[dofs[c * n + k]] = treated[dofs[c * n + l]] =
-                      true;
+                    treated[dofs[c * n + k]] = treated[dofs[c * n + l]] = true;
                   }
             }
           unsigned int n_treated = 0;

@@ -45,7 +45,7 @@ namespace psmpm
           const auto               &active = grid.lumped_mass();
           auto                     &mass   = grid.cell_arrays().mass;
           const double              rho    = grid.reference_density();
-          std::vector<bool> treated(active.size(), false);
+          std::vector<bool>         treated(active.size(), false);
           for (const unsigned int c : grid.owned_cells())
             {
               const double w = alpha * rho * (1. - fill[c]);

@@ -69,14 +69,15 @@ namespace psmpm
             Utilities::MPI::max(fill, grid.get_communicator(), all);
             fill.swap(all);
           }
-          const auto  &active = grid.lumped_mass();
-          const double rho    = grid.reference_density();
-          auto        &blocks = grid.patch_blocks();
+          const auto       &active = grid.lumped_mass();
+          const double      rho    = grid.reference_density();
+          auto             &blocks = grid.patch_blocks();
           std::vector<bool> treated(active.size(), false);
           for (const auto &f : faces)
             {
               const double w =
-                gamma * rho * (1. - std::min(fill[f.cells[0]], fill[f.cells[1]]));
+                gamma * rho *
+                (1. - std::min(fill[f.cells[0]], fill[f.cells[1]]));
               if (!(w > 0))
                 continue;
               // Both cells hold particles: the pair's polynomial is fixed
@@ -121,7 +122,7 @@ namespace psmpm
                   const double       h,
                   const unsigned int k)
         {
-          std::vector<double> r;
+          std::vector<double>  r;
           const Tensor<1, dim> y = (x - x0) / h;
           if (dim == 1)
             for (unsigned int a = 0; a <= k; ++a)
@@ -140,11 +141,11 @@ namespace psmpm
         void
         compute_pair_patches(const GridSystem<dim> &grid)
         {
-          const auto        &space = grid.get_space();
-          const auto        &dh    = grid.get_dof_handler();
-          const auto        &rel   = grid.relevant_dofs();
-          const unsigned int n     = grid.dofs_per_cell;
-          const unsigned int k     = space.degree();
+          const auto                          &space = grid.get_space();
+          const auto                          &dh    = grid.get_dof_handler();
+          const auto                          &rel   = grid.relevant_dofs();
+          const unsigned int                   n     = grid.dofs_per_cell;
+          const unsigned int                   k     = space.degree();
           std::vector<types::global_dof_index> dofs(n);
           std::vector<double>                  values(n);
           std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
@@ -166,74 +167,70 @@ namespace psmpm
                   continue;
                 if (cell->is_locally_owned() != other->is_locally_owned() &&
                     std::min(cell->subdomain_id(), other->subdomain_id()) !=
-                      Utilities::MPI::this_mpi_process(
-                        grid.get_communicator()))
+                      Utilities::MPI::this_mpi_process(grid.get_communicator()))
                   continue;
-                  Face face;
-                  face.cells = {cell->active_cell_index(),
-                                other->active_cell_index()};
-                  // Patch DoFs and, per cell, the map cell DoF -> patch.
-                  std::array<std::vector<unsigned int>, 2> map;
-                  std::vector<types::global_dof_index>      patch;
-                  for (unsigned int s = 0; s < 2; ++s)
-                    {
-                      (s == 0 ? cell : other)->get_dof_indices(dofs);
-                      for (const auto g : dofs)
-                        {
-                          auto it = std::find(patch.begin(), patch.end(), g);
-                          map[s].push_back(it - patch.begin());
-                          if (it == patch.end())
-                            patch.push_back(g);
-                        }
-                    }
-                  for (const auto g : patch)
-                    face.dofs.push_back(rel.index_within_set(g));
-                  const unsigned int m = patch.size();
-                  // Polynomials centred at the face, scaled by the patch.
-                  const Point<dim> x0 =
-                    (cell->center() + other->center()) / 2.;
-                  const double     h  = std::max(cell->diameter(),
-                                            other->diameter());
-                  const unsigned int np =
-                    monomials(x0, x0, h, k).size();
-                  FullMatrix<double> Mw(m, m), B(np, m), G(np, np);
-                  for (unsigned int s = 0; s < 2; ++s)
-                    {
-                      const unsigned int c = face.cells[s];
-                      const Quadrature<dim> q = space.cell_quadrature(dh, c);
-                      for (unsigned int i = 0; i < q.size(); ++i)
-                        {
-                          space.evaluate(c, q.point(i), values.data(), nullptr);
-                          const auto   p = monomials(q.point(i), x0, h, k);
-                          const double w = q.weight(i);
-                          for (unsigned int a = 0; a < n; ++a)
-                            {
-                              for (unsigned int b = 0; b < n; ++b)
-                                Mw(map[s][a], map[s][b]) +=
-                                  w * values[a] * values[b];
-                              for (unsigned int r = 0; r < np; ++r)
-                                B(r, map[s][a]) += w * p[r] * values[a];
-                            }
-                          for (unsigned int r = 0; r < np; ++r)
-                            for (unsigned int t = 0; t < np; ++t)
-                              G(r, t) += w * p[r] * p[t];
-                        }
-                    }
-                  // S = Mw - B^T G^-1 B.
-                  G.gauss_jordan();
-                  FullMatrix<double> GB(np, m);
-                  G.mmult(GB, B);
-                  face.S = Mw;
-                  FullMatrix<double> BtGB(m, m);
-                  B.Tmmult(BtGB, GB);
-                  face.S.add(-1., BtGB);
-                  // Exact symmetry.
-                  for (unsigned int a = 0; a < m; ++a)
-                    for (unsigned int b = a + 1; b < m; ++b)
-                      face.S(a, b) = face.S(b, a) =
-                        0.5 * (face.S(a, b) + face.S(b, a));
-                  faces.push_back(std::move(face));
-                }
+                Face face;
+                face.cells = {cell->active_cell_index(),
+                              other->active_cell_index()};
+                // Patch DoFs and, per cell, the map cell DoF -> patch.
+                std::array<std::vector<unsigned int>, 2> map;
+                std::vector<types::global_dof_index>     patch;
+                for (unsigned int s = 0; s < 2; ++s)
+                  {
+                    (s == 0 ? cell : other)->get_dof_indices(dofs);
+                    for (const auto g : dofs)
+                      {
+                        auto it = std::find(patch.begin(), patch.end(), g);
+                        map[s].push_back(it - patch.begin());
+                        if (it == patch.end())
+                          patch.push_back(g);
+                      }
+                  }
+                for (const auto g : patch)
+                  face.dofs.push_back(rel.index_within_set(g));
+                const unsigned int m = patch.size();
+                // Polynomials centred between the cells, scaled by them.
+                const Point<dim> x0 = (cell->center() + other->center()) / 2.;
+                const double h = std::max(cell->diameter(), other->diameter());
+                const unsigned int np = monomials(x0, x0, h, k).size();
+                FullMatrix<double> Mw(m, m), B(np, m), G(np, np);
+                for (unsigned int s = 0; s < 2; ++s)
+                  {
+                    const unsigned int    c = face.cells[s];
+                    const Quadrature<dim> q = space.cell_quadrature(dh, c);
+                    for (unsigned int i = 0; i < q.size(); ++i)
+                      {
+                        space.evaluate(c, q.point(i), values.data(), nullptr);
+                        const auto   p = monomials(q.point(i), x0, h, k);
+                        const double w = q.weight(i);
+                        for (unsigned int a = 0; a < n; ++a)
+                          {
+                            for (unsigned int b = 0; b < n; ++b)
+                              Mw(map[s][a], map[s][b]) +=
+                                w * values[a] * values[b];
+                            for (unsigned int r = 0; r < np; ++r)
+                              B(r, map[s][a]) += w * p[r] * values[a];
+                          }
+                        for (unsigned int r = 0; r < np; ++r)
+                          for (unsigned int t = 0; t < np; ++t)
+                            G(r, t) += w * p[r] * p[t];
+                      }
+                  }
+                // S = Mw - B^T G^-1 B.
+                G.gauss_jordan();
+                FullMatrix<double> GB(np, m);
+                G.mmult(GB, B);
+                face.S = Mw;
+                FullMatrix<double> BtGB(m, m);
+                B.Tmmult(BtGB, GB);
+                face.S.add(-1., BtGB);
+                // Exact symmetry.
+                for (unsigned int a = 0; a < m; ++a)
+                  for (unsigned int b = a + 1; b < m; ++b)
+                    face.S(a, b) = face.S(b, a) =
+                      0.5 * (face.S(a, b) + face.S(b, a));
+                faces.push_back(std::move(face));
+              }
             }
         }
 
