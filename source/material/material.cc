@@ -148,6 +148,20 @@ namespace psmpm
 
 
 
+    template <int dim>
+    double
+    Material<dim>::max_wave_speed(const unsigned int             n,
+                                  const SymmetricTensor<2, dim> *stress,
+                                  const double                  *state) const
+    {
+      double c = 0;
+      for (unsigned int p = 0; p < n; ++p)
+        c = std::max(c, wave_speed(stress[p], state + p * n_state()));
+      return c;
+    }
+
+
+
     template class Material<1>;
     template class Material<2>;
   } // namespace Material

@@ -175,6 +175,22 @@ namespace psmpm
 
     template <int dim>
     double
+    NeoHookean<dim>::max_wave_speed(const unsigned int             n,
+                                    const SymmetricTensor<2, dim> *stress,
+                                    const double                  *state) const
+    {
+      double c = 0;
+      for (unsigned int p = 0; p < n; ++p)
+        c = std::max(c,
+                     NeoHookean<dim>::wave_speed(stress[p],
+                                                 state + p * this->n_state()));
+      return c;
+    }
+
+
+
+    template <int dim>
+    double
     NeoHookean<dim>::wave_speed(const SymmetricTensor<2, dim> &,
                                 const double *state) const
     {

@@ -134,7 +134,8 @@ namespace psmpm
       prm.enter_subsection("Transfer");
       transfer =
         TransferSchemeRegistry<dim>::instance().create(prm.get("Scheme"),
-                                                       "Transfer/Scheme");
+                                                       "Transfer/Scheme",
+                                                       prm);
       prm.leave_subsection();
 
       prm.enter_subsection("Initial conditions");
@@ -354,6 +355,14 @@ namespace psmpm
     }
 
     template <int dim>
+    double
+    Simulator<dim>::next_time_step()
+    {
+      time_step_control.update(state);
+      return time_step_control.next(state.time);
+    }
+
+    template <int dim>
     Postprocess::Errors
     Simulator<dim>::compute_errors() const
     {
@@ -379,6 +388,8 @@ namespace psmpm
       statistics.add_value("time", state.time);
       statistics.add_value("dt", state.dt);
       Postprocess::EnergyStatistics<dim>::add_columns(e, statistics);
+      rotation_statistics.add_columns(rotation_statistics.compute(state),
+                                      statistics);
       statistics.add_value("cg_iterations", gs.iterations);
       statistics.add_value("condition_number", gs.condition_number);
       statistics.add_value("min_relative_diagonal", gs.min_relative_diagonal);
@@ -502,7 +513,7 @@ namespace psmpm
       while (!time_step_control.finished(state.time) &&
              status == Status::completed)
         {
-          do_time_step(time_step_control.next(state.time));
+          do_time_step(next_time_step());
           ++state.step;
           postprocess(wall.wall_time());
           const bool last = time_step_control.finished(state.time) ||
@@ -546,9 +557,12 @@ namespace psmpm
       summary.set_integer("cg_iterations", total_iterations);
       summary.set("end_time", state.time);
       summary.set("time_step", time_step_control.get_time_step());
+      summary.set("time_step_min", time_step_control.get_min_time_step());
+      summary.set("time_step_max", time_step_control.get_max_time_step());
       summary.set("basis", state.space->name());
       summary.set("mass_matrix", grid_parameters.type);
       summary.set("material", state.material->name());
+      rotation_statistics.fill_summary(summary);
       if (reference)
         {
           error_norms->fill_summary(state, summary);

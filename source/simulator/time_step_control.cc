@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/time_step_control.h>
 
@@ -59,11 +61,10 @@ namespace psmpm
     void
     TimeStepControl::initialize(const State<dim> &state)
     {
-      const double h_min = state.locator.minimum_height();
+      h_min              = state.locator.minimum_height();
       const double c_p   = state.material->p_wave_speed();
       const double bound = h_min / c_p;
-      const double factor =
-        state.space->stability_factor(!state.grid->uses_matrix());
+      factor = state.space->stability_factor(!state.grid->uses_matrix());
       if (fixed_step > 0)
         {
           AssertThrow(fixed_step <= bound || !check_time_step,
@@ -75,7 +76,8 @@ namespace psmpm
           time_step = fixed_step;
         }
       else
-        time_step = courant_number * factor * bound;
+        update(state);
+      min_time_step = max_time_step = time_step;
       time_step_warning.clear();
       if (time_step > factor * bound)
         time_step_warning =
@@ -86,6 +88,32 @@ namespace psmpm
           " (doc/stability.md); the run may become unstable.";
     }
 
+    template <int dim>
+    void
+    TimeStepControl::update(const State<dim> &state)
+    {
+      if (!is_automatic())
+        return;
+      const auto &particles = state.particles;
+      double      speed     = 0;
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        speed = std::max(speed, particles.velocity[p].norm_square());
+      const double c = state.material->max_wave_speed(particles.size(),
+                                                      particles.stress.data(),
+                                                      particles.state.data());
+      const double c_max =
+        Utilities::MPI::max(std::max(c, state.material->p_wave_speed()) +
+                              std::sqrt(speed),
+                            state.comm);
+      time_step     = courant_number * factor * h_min / c_max;
+      min_time_step = std::min(min_time_step, time_step);
+      max_time_step = std::max(max_time_step, time_step);
+    }
+
+    template void
+    TimeStepControl::update(const State<1> &);
+    template void
+    TimeStepControl::update(const State<2> &);
     template void
     TimeStepControl::initialize(const State<1> &);
     template void

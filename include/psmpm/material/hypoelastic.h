@@ -53,6 +53,15 @@ namespace psmpm
                      const SymmetricTensor<2, dim> *stress,
                      const double                  *state,
                      double                        *energy) const override;
+
+      /// Small-strain law: the p-wave speed, whatever the state.
+      double
+      max_wave_speed(const unsigned int,
+                     const SymmetricTensor<2, dim> *,
+                     const double *) const override
+      {
+        return this->p_wave_speed();
+      }
     };
   } // namespace Material
 } // namespace psmpm

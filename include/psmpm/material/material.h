@@ -106,6 +106,13 @@ namespace psmpm
       wave_speed(const SymmetricTensor<2, dim> &stress,
                  const double                  *state) const;
 
+      /// Largest wave_speed() over @p n particles (one virtual call per
+      /// batch: the automatic time step asks every step).
+      virtual double
+      max_wave_speed(const unsigned int             n,
+                     const SymmetricTensor<2, dim> *stress,
+                     const double                  *state) const;
+
       double
       bulk_modulus() const
       {

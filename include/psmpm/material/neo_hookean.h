@@ -81,6 +81,11 @@ namespace psmpm
       double
       wave_speed(const SymmetricTensor<2, dim> &stress,
                  const double                  *state) const override;
+
+      double
+      max_wave_speed(const unsigned int             n,
+                     const SymmetricTensor<2, dim> *stress,
+                     const double                  *state) const override;
     };
   } // namespace Material
 } // namespace psmpm

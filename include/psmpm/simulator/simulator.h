@@ -15,6 +15,7 @@
 #include <psmpm/postprocess/error_norms.h>
 #include <psmpm/postprocess/output_writer.h>
 #include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/rotation_statistics.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/postprocess/tracked_particle.h>
 #include <psmpm/simulator/stability_monitor.h>
@@ -91,6 +92,11 @@ namespace psmpm
       /// One time step (public for tests): transfer, locate, advance time.
       void
       do_time_step(const double dt);
+
+      /// The length of the next step: the automatic step recomputed from
+      /// the current state (or the fixed one), cut at the end time.
+      double
+      next_time_step();
 
       /// Status, errors, counts and timers (the caller adds wall time).
       void
@@ -172,6 +178,7 @@ namespace psmpm
       StabilityMonitor                                   monitor;
       std::unique_ptr<Postprocess::Reference<dim>>       reference;
       Postprocess::EnergyStatistics<dim>                 energy_statistics;
+      Postprocess::RotationStatistics<dim>               rotation_statistics;
       std::unique_ptr<Postprocess::ErrorNorms<dim>>      error_norms;
       std::unique_ptr<Postprocess::TrackedParticle<dim>> tracked;
       std::unique_ptr<Postprocess::OutputWriter<dim>>    writer;

@@ -18,11 +18,15 @@ namespace psmpm
 
     /**
      * The time step and the end time (subsection "Time"): a fixed step, or
-     * dt = C f h_min / c_p with the Courant number C, the measured
-     * stability factor f of the space and mass strategy, the smallest
-     * triangle height (element length in 1D) and the material's wave
-     * speed. A fixed step above h_min / c_p is rejected (thesis eq. 2.48
-     * with the p-wave speed), one above the measured limit warned about.
+     * the automatic step dt = C f h_min / max_p (c_p + |v_p|), recomputed
+     * before every step from the current state, with the Courant number
+     * C, the measured stability factor f of the space and mass strategy,
+     * the smallest triangle height (element length in 1D), the largest
+     * wave speed of the particles' current material state (a neo-Hookean
+     * body stiffens as it compresses) and the particle speed (material
+     * must not cross more than a cell per step). A fixed step above
+     * h_min / c_p is rejected (thesis eq. 2.48 with the p-wave speed), one
+     * above the measured limit warned about.
      */
     class TimeStepControl
     {
@@ -39,6 +43,12 @@ namespace psmpm
       initialize(const State<dim> &state);
 
       /// The step to take from @p time (the last one ends at end_time).
+      /// Recompute the automatic step from the current state (all
+      /// ranks); nothing for a fixed step.
+      template <int dim>
+      void
+      update(const State<dim> &state);
+
       double
       next(const double time) const
       {
@@ -66,6 +76,21 @@ namespace psmpm
         return time_step;
       }
       double
+      get_min_time_step() const
+      {
+        return min_time_step;
+      }
+      double
+      get_max_time_step() const
+      {
+        return max_time_step;
+      }
+      bool
+      is_automatic() const
+      {
+        return !(fixed_step > 0);
+      }
+      double
       get_end_time() const
       {
         return end_time;
@@ -83,6 +108,10 @@ namespace psmpm
       double      courant_number  = 0.5;
       bool        check_time_step = true;
       double      time_step       = 0;
+      double      min_time_step   = 0;
+      double      max_time_step   = 0;
+      double      factor          = 1; ///< of the space and mass strategy
+      double      h_min           = 0;
       std::string time_step_warning;
     };
   } // namespace Simulator

@@ -23,7 +23,8 @@ namespace psmpm
      * Locating the moved particles is the simulator's job. Failures go to
      * the monitor; kernels never throw for an unstable state.
      *
-     * Schemes register in TransferSchemeRegistry<dim>.
+     * Schemes register in TransferSchemeRegistry<dim>; the factory gets
+     * the parameters inside subsection "Transfer".
      */
     template <int dim>
     class TransferScheme
@@ -43,7 +44,8 @@ namespace psmpm
     };
 
     template <int dim>
-    using TransferSchemeRegistry = Registry<TransferScheme<dim>>;
+    using TransferSchemeRegistry =
+      Registry<TransferScheme<dim>, ParameterHandler &>;
   } // namespace Simulator
 } // namespace psmpm
 

@@ -12,37 +12,94 @@ namespace psmpm
   {
     namespace
     {
+      enum class AffineMatrix
+      {
+        control_points,
+        velocity_gradient,
+        none
+      };
+
       /**
-       * Affine Particle-In-Cell (Jiang et al. 2015) for any space, with the
-       * space's control points X_i (sum_i X_i N_i(x) = x) in place of the
-       * grid nodes. Each particle carries v(x) = v_p + C_p (x - x_p):
+       * Affine particle-in-cell (Jiang et al. 2015) for any space, with the
+       * space's control points X_i (sum_i N_i(x) X_i = x) in place of grid
+       * nodes. Each particle carries the velocity field
+       * v(x) = v_p + C_p (x - x_p).
        *
-       * - P2G: lumped (and, for matrix strategies, consistent) mass, grid
-       *   momentum sum_p m_p N_ip (v_p + C_p (X_i - x_p)), solve for v_i;
-       *   forces, solve for a_i; v_i += dt a_i.
-       * - G2P: v_p = sum_i N_ip v_i, C_p = B_p D_p^{-1} with
-       *   B_p = sum_i N_ip v_i (X_i - x_p)^T and
-       *   D_p = sum_i N_ip (X_i - x_p)(X_i - x_p)^T.
+       * Particle to grid. The grid momentum is the mass matrix applied to
+       * the particles' affine fields: per particle, sum_j M^p_ij (v_p +
+       * C_p (X_j - x_p)). For a consistent row this is m_p N_i v_p (the
+       * affine part integrates to zero: sum_j N_j (X_j - x_p) = 0), for a
+       * lumped row m_p N_i (v_p + C_p (X_i - x_p)) (APIC). Mass strategies
+       * change the per-cell matrices (partial lumping), so the momentum is
+       * the consistent one plus the strategy's change Delta of the cell
+       * matrix applied to the cell's lumped-APIC values u_k = q_k / w_k. An
+       * affine field is then carried exactly by every strategy (M v = M u
+       * with v_i = A X_i + b), and momentum is kept (Delta has zero column
+       * sums).
        *
-       * With lumped mass an affine v is carried exactly and angular
-       * momentum (including the particles' affine part) is conserved,
-       * because G2P then P2G is the identity on affine fields. D_p is
-       * singular where the particle's weights sit on a line (P1: a particle
-       * on an edge, and every particle at a vertex); in the directions where
-       * D_p has no support the velocity gradient L_p = sum_i v_i grad N_ip
-       * stands in (equal to C_p for affine fields, so exactness is kept).
+       * Grid update. v_i^n from the momentum, a_i from the forces,
+       * v_i^{n+1} = v_i^n + dt a_i. Internal forces of a symmetric stress
+       * exert no torque on the control points (sum_i X_i (x) grad N_i = I),
+       * so the grid keeps angular momentum.
+       *
+       * Grid to particle. v_p = sum_i N_i v_i^{n+1} and the new affine
+       * matrix, either
+       *  - control points: C_p = B_p D_p^{-1}, B_p = sum_i N_i v_i (X_i -
+       *    x_p)^T, D_p = sum_i N_i (X_i - x_p)(X_i - x_p)^T; exactly APIC,
+       *    angular momentum conserving. Bounded where functions carry
+       *    little mass only if D_p is well conditioned with weights spread
+       *    over many control points (Powell-Sabin); directions in which D_p
+       *    has no support keep the old C_p;
+       *  - velocity gradient: C_p = grad v of the projected field below
+       *    (Taylor PIC); bounded for every space, exact for affine fields.
+       *    P1 needs it: its D_p is singular on edges and D_p^{-1} grows as
+       *    1 / N_k, so B_p D_p^{-1} (= sum_i v_i grad N_i^T) carries the
+       *    acceleration f_k / m_k of a function with little mass undamped.
+       *
+       * Stress and positions (MUSL's second projection, for the same
+       * reason as MUSL): the particles' new affine fields are projected
+       * again, and the gradient of that field drives the material update;
+       * positions move with v_p.
        */
       template <int dim>
       class APIC : public TransferScheme<dim>
       {
       public:
+        static void
+        declare_parameters(ParameterHandler &prm)
+        {
+          prm.declare_entry(
+            "Affine matrix",
+            "automatic",
+            Patterns::Selection(
+              "automatic|control points|velocity gradient|none"),
+            "How the apic scheme forms each particle's affine velocity "
+            "matrix C_p from the grid: 'control points' = B_p D_p^{-1} over "
+            "the space's control points (APIC proper, angular momentum "
+            "conserving), 'velocity gradient' = the gradient of the "
+            "re-projected velocity (Taylor PIC), 'automatic' = control "
+            "points for quadratic spaces, velocity gradient for linear "
+            "ones (whose D_p is singular on element edges), 'none' = C_p = 0 "
+            "(plain PIC with the same projections, for comparison).");
+        }
+
+        /// @p prm is inside subsection "Transfer".
+        explicit APIC(ParameterHandler &prm)
+          : matrix_choice(prm.get("Affine matrix"))
+        {
+        }
+
         bool
         step(State<dim>       &state,
              StabilityMonitor &monitor,
              TimerOutput      &timer) override
         {
-          update_control_points(state);
-          particles_to_grid(state, timer);
+          setup(state);
+          {
+            TimerOutput::Scope t(timer, "particle to grid");
+            mass_to_grid(state);
+            momentum_to_grid(state);
+          }
           if (!solve(state, state.grid_velocity, monitor, timer))
             return false;
           forces_to_grid(state, timer);
@@ -50,7 +107,14 @@ namespace psmpm
             return false;
           for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
             state.grid_velocity[l] += state.dt * state.grid_acceleration[l];
-          grid_to_particles(state, monitor, timer);
+          velocities_to_particles(state, timer);
+          {
+            TimerOutput::Scope t(timer, "particle to grid");
+            momentum_to_grid(state);
+          }
+          if (!solve(state, state.grid_velocity, monitor, timer))
+            return false;
+          update_particle_state(state, monitor, timer);
           return true;
         }
 
@@ -78,12 +142,18 @@ namespace psmpm
           return true;
         }
 
-        /// The control points in local relevant numbering; they depend only
-        /// on the mesh and the DoF numbering, so they are computed again
-        /// only if the relevant DoFs change (a strategy may widen them).
+        /// Control points in local relevant numbering (they depend only on
+        /// the mesh and the DoF numbering) and the mode.
         void
-        update_control_points(const State<dim> &state)
+        setup(const State<dim> &state)
         {
+          if (matrix_choice == "none")
+            mode = AffineMatrix::none;
+          else if (matrix_choice == "control points" ||
+                   (matrix_choice == "automatic" && state.space->degree() > 1))
+            mode = AffineMatrix::control_points;
+          else
+            mode = AffineMatrix::velocity_gradient;
           const auto &global = state.grid->relevant_global_indices();
           if (control_points.size() == global.size() && !global.empty())
             return;
@@ -94,21 +164,60 @@ namespace psmpm
             control_points[l] = all[global[l]];
         }
 
+        /// Per-cell particle mass (lumped and, for matrix strategies,
+        /// consistent), then the strategy; Delta = its change of the cell
+        /// matrices.
         void
-        particles_to_grid(State<dim> &state, TimerOutput &timer) const
+        mass_to_grid(State<dim> &state)
         {
-          TimerOutput::Scope t(timer, "particle to grid");
-          auto              &grid = *state.grid;
+          auto &grid = *state.grid;
           grid.zero_cell_mass();
+          const auto        &particles  = state.particles;
+          const unsigned int n          = grid.dofs_per_cell;
+          auto              &cells      = grid.cell_arrays();
+          const bool         consistent = !cells.mass.empty();
+          double            *lumped     = cells.lumped.data();
+          double            *mass_mat   = cells.mass.data();
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int base = particles.cell[p] * n;
+              const double       m    = particles.mass[p];
+              const double      *phi  = &state.shape_values[p * n];
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  const double mk = m * phi[k];
+                  lumped[base + k] += mk;
+                  if (consistent)
+                    {
+                      double *row = mass_mat + (base + k) * n;
+                      for (unsigned int l = 0; l < n; ++l)
+                        row[l] += mk * phi[l];
+                    }
+                }
+            }
+          particle_mass = cells.lumped;
+          if (consistent)
+            delta = cells.mass;
+          grid.assemble_mass();
+          if (consistent)
+            for (std::size_t i = 0; i < delta.size(); ++i)
+              delta[i] = cells.mass[i] - delta[i];
+        }
+
+        /// The grid momentum of the particles' affine fields into the cell
+        /// right-hand sides (see the class documentation).
+        void
+        momentum_to_grid(State<dim> &state)
+        {
+          auto &grid = *state.grid;
           grid.zero_cell_rhs();
           const auto         &particles  = state.particles;
           const unsigned int  n          = grid.dofs_per_cell;
           const unsigned int *dofs       = grid.cell_dofs().data();
           auto               &cells      = grid.cell_arrays();
           const bool          consistent = !cells.mass.empty();
-          double             *lumped     = cells.lumped.data();
-          double             *mass_mat   = cells.mass.data();
           Tensor<1, dim>     *rhs        = cells.rhs.data();
+          affine_momentum.assign(cells.rhs.size(), Tensor<1, dim>());
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               const unsigned int    base = particles.cell[p] * n;
@@ -120,18 +229,32 @@ namespace psmpm
               for (unsigned int k = 0; k < n; ++k)
                 {
                   const double mk = m * phi[k];
-                  lumped[base + k] += mk;
-                  rhs[base + k] +=
+                  affine_momentum[base + k] +=
                     mk * (v + C * (control_points[dofs[base + k]] - x));
                   if (consistent)
-                    {
-                      double *row = mass_mat + (base + k) * n;
-                      for (unsigned int l = 0; l < n; ++l)
-                        row[l] += mk * phi[l];
-                    }
+                    rhs[base + k] += mk * v;
                 }
             }
-          grid.assemble_mass();
+          if (!consistent)
+            {
+              cells.rhs.swap(affine_momentum);
+              return;
+            }
+          // rhs += Delta u per cell, u_k = q_k / w_k.
+          for (const unsigned int c : grid.owned_cells())
+            {
+              const unsigned int base = c * n;
+              for (unsigned int l = 0; l < n; ++l)
+                if (particle_mass[base + l] > 0)
+                  {
+                    const Tensor<1, dim> u =
+                      affine_momentum[base + l] / particle_mass[base + l];
+                    const double *D = &delta[base * n];
+                    for (unsigned int k = 0; k < n; ++k)
+                      if (D[k * n + l] != 0)
+                        rhs[base + k] += D[k * n + l] * u;
+                  }
+            }
         }
 
         static void
@@ -156,65 +279,109 @@ namespace psmpm
             }
         }
 
-        /**
-         * C = B D^{-1} on the eigendirections of D with support, L on the
-         * others. "Support" is relative to the trace of D, the particle's
-         * squared spread of control points, so the test is scale-free.
-         */
+        /// C = B D^{-1} on the eigendirections of D with support (relative
+        /// to its trace: scale-free), the old C on the others. Closed form
+        /// (no iterative eigensolver that could throw on a non-finite D of
+        /// a run going unstable: NaN passes to the stability monitor).
         static Tensor<2, dim>
         affine_matrix(const Tensor<2, dim>          &B,
                       const SymmetricTensor<2, dim> &D,
-                      const Tensor<2, dim>          &L)
+                      const Tensor<2, dim>          &C_old)
         {
-          const double   threshold = 1e-3;
-          const double   scale     = trace(D);
-          Tensor<2, dim> C;
+          const double scale = trace(D);
           if (!(scale > 0))
-            return L;
-          for (const auto &[lambda, e] : eigenvectors(D))
+            return C_old;
+          Tensor<2, dim> C;
+          if constexpr (dim == 1)
+            C[0][0] = B[0][0] / D[0][0];
+          else
             {
-              const Tensor<1, dim> Ce =
-                lambda > threshold * scale ? (B * e) / lambda : L * e;
-              C += outer_product(Ce, e);
+              const double a = D[0][0], b = D[0][1], c = D[1][1];
+              const double mean = 0.5 * (a + c);
+              const double r    = std::hypot(0.5 * (a - c), b);
+              Tensor<1, 2> e1;
+              if (std::abs(a - c) + std::abs(b) <= 1e-14 * scale)
+                e1[0] = 1; // D = lambda I
+              else if (a >= c)
+                e1[0] = mean + r - c, e1[1] = b;
+              else
+                e1[0] = b, e1[1] = mean + r - a;
+              e1 /= e1.norm();
+              const Tensor<1, 2> e2({-e1[1], e1[0]});
+              for (const auto &[lambda, e] :
+                   {std::make_pair(mean + r, e1), std::make_pair(mean - r, e2)})
+                {
+                  const Tensor<1, 2> Ce =
+                    lambda > 1e-3 * scale ? (B * e) / lambda : C_old * e;
+                  C += outer_product(Ce, e);
+                }
             }
           return C;
         }
 
         void
-        grid_to_particles(State<dim>       &state,
-                          StabilityMonitor &monitor,
-                          TimerOutput      &timer)
+        velocities_to_particles(State<dim> &state, TimerOutput &timer) const
         {
           TimerOutput::Scope  t(timer, "grid to particle");
           auto               &particles = state.particles;
           const unsigned int  n         = state.grid->dofs_per_cell;
           const unsigned int *dofs      = state.grid->cell_dofs().data();
-          const double        dt        = state.dt;
-          increments.resize(particles.size());
-          volume_ratio.resize(particles.size());
+          const bool          fit       = mode == AffineMatrix::control_points;
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               const unsigned int      base = particles.cell[p] * n;
               const Point<dim>       &x    = particles.position[p];
               const double           *phi  = &state.shape_values[p * n];
-              const Tensor<1, dim>   *grad = &state.shape_gradients[p * n];
               Tensor<1, dim>          v;
-              Tensor<2, dim>          B, L; // L_ij = dv_i/dx_j
+              Tensor<2, dim>          B;
               SymmetricTensor<2, dim> D;
               for (unsigned int k = 0; k < n; ++k)
                 {
                   const unsigned int    l  = dofs[base + k];
                   const Tensor<1, dim> &vk = state.grid_velocity[l];
-                  const Tensor<1, dim>  r  = control_points[l] - x;
                   v += phi[k] * vk;
-                  B += phi[k] * outer_product(vk, r);
-                  D += phi[k] * symmetrize(outer_product(r, r));
-                  L += outer_product(vk, grad[k]);
+                  if (fit)
+                    {
+                      const Tensor<1, dim> r = control_points[l] - x;
+                      B += phi[k] * outer_product(vk, r);
+                      D += phi[k] * symmetrize(outer_product(r, r));
+                    }
                 }
-              particles.velocity[p]   = v;
-              particles.affine[p]     = affine_matrix(B, D, L);
+              particles.velocity[p] = v;
+              if (fit)
+                particles.affine[p] = affine_matrix(B, D, particles.affine[p]);
+              else if (mode == AffineMatrix::none)
+                particles.affine[p] = Tensor<2, dim>();
+            }
+        }
+
+        /// Stress from the gradient of the projected field, positions with
+        /// v_p, and, for the velocity-gradient mode, the new C_p.
+        void
+        update_particle_state(State<dim>       &state,
+                              StabilityMonitor &monitor,
+                              TimerOutput      &timer)
+        {
+          TimerOutput::Scope  t(timer, "update");
+          auto               &particles = state.particles;
+          const unsigned int  n         = state.grid->dofs_per_cell;
+          const unsigned int *dofs      = state.grid->cell_dofs().data();
+          const double        dt        = state.dt;
+          const bool gradient = mode == AffineMatrix::velocity_gradient;
+          increments.resize(particles.size());
+          volume_ratio.resize(particles.size());
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int    base = particles.cell[p] * n;
+              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
+              Tensor<2, dim>        L; // L_ij = dv_i/dx_j
+              for (unsigned int k = 0; k < n; ++k)
+                L +=
+                  outer_product(state.grid_velocity[dofs[base + k]], grad[k]);
+              if (gradient)
+                particles.affine[p] = L;
               increments[p]           = dt * L;
-              const Tensor<1, dim> du = dt * v;
+              const Tensor<1, dim> du = dt * particles.velocity[p];
               particles.displacement[p] += du;
               particles.position[p] += du;
             }
@@ -234,8 +401,13 @@ namespace psmpm
             }
         }
 
+        std::string             matrix_choice;
+        AffineMatrix            mode = AffineMatrix::control_points;
         std::vector<Point<dim>> control_points; ///< local relevant numbering
-        // Per-step scratch, kept to avoid reallocation.
+        // Per-step arrays, kept to avoid reallocation.
+        std::vector<double>         particle_mass; ///< w_k per cell DoF
+        std::vector<double>         delta; ///< strategy's change, per cell
+        std::vector<Tensor<1, dim>> affine_momentum; ///< q_k per cell DoF
         std::vector<Tensor<2, dim>> increments;
         std::vector<double>         volume_ratio;
       };
@@ -243,8 +415,9 @@ namespace psmpm
 
     RegisterForDims<TransferSchemeRegistry, APIC> register_apic(
       "apic",
-      "affine particle-in-cell (Jiang et al. 2015) with the space's control "
-      "points: carries affine velocity fields, conserves angular momentum "
-      "with lumped mass");
+      "affine particle-in-cell (Jiang et al. 2015) through the space's "
+      "control points: carries affine velocity fields, keeps angular "
+      "momentum with lumped and partially lumped mass",
+      &APIC<2>::declare_parameters);
   } // namespace Simulator
 } // namespace psmpm

@@ -1,0 +1,67 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_postprocess_rotation_statistics_h
+#define psmpm_postprocess_rotation_statistics_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/table_handler.h>
+
+#include <psmpm/postprocess/summary.h>
+#include <psmpm/simulator/state.h>
+
+#include <vector>
+
+namespace psmpm
+{
+  namespace Postprocess
+  {
+    using namespace dealii;
+
+    /**
+     * Angular momentum and mean rotation of the body (2D; nothing in 1D),
+     * about the centre of mass of the initial configuration:
+     *
+     * - angular momentum sum_p m_p (x_p - c) x v_p plus the particles'
+     *   affine part sum_p m_p sum_i N_i(x_p) (X_i - x_p) x C_p (X_i - x_p)
+     *   (X_i the space's control points). With C_p = 0 this is the usual
+     *   particle sum; with the affine transfers it is the quantity they
+     *   conserve: the angular momentum the grid receives.
+     * - mean rotation angle atan2(sum m r0 x r, sum m r0 . r) with r0 =
+     *   X_p - c0 and r = x_p - c(t), the mass-weighted best rotation of
+     *   the body since the start (exact for a rigid rotation).
+     *
+     * Columns angular_momentum and rotation_angle; summary.json gets the
+     * initial and final angular momentum, its relative change and the
+     * final angle.
+     */
+    template <int dim>
+    class RotationStatistics
+    {
+    public:
+      struct Values
+      {
+        double angular_momentum = 0;
+        double rotation_angle   = 0;
+      };
+
+      Values
+      compute(const Simulator::State<dim> &state);
+
+      void
+      add_columns(const Values &values, TableHandler &statistics);
+
+      void
+      fill_summary(Summary &summary) const;
+
+    private:
+      bool                    initialized = false;
+      Point<dim>              centre;         ///< of the initial configuration
+      std::vector<Point<dim>> control_points; ///< local relevant numbering
+      Values                  initial, last;
+      double                  scale = 0; ///< sum m |x - c| |v| at the start
+    };
+  } // namespace Postprocess
+} // namespace psmpm
+
+#endif

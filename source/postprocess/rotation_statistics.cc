@@ -1,0 +1,149 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
+#include <psmpm/postprocess/rotation_statistics.h>
+
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Postprocess
+  {
+    namespace
+    {
+      double
+      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        return a[0] * b[1] - a[1] * b[0];
+      }
+    } // namespace
+
+    template <int dim>
+    typename RotationStatistics<dim>::Values
+    RotationStatistics<dim>::compute(const Simulator::State<dim> &state)
+    {
+      if constexpr (dim == 1)
+        {
+          (void)state;
+          return {};
+        }
+      else
+        {
+          const auto &particles = state.particles;
+          MPI_Comm    comm      = state.comm;
+          if (!initialized)
+            {
+              double       mass = 0;
+              Tensor<1, 2> first;
+              for (std::size_t p = 0; p < particles.size(); ++p)
+                {
+                  mass += particles.mass[p];
+                  first += particles.mass[p] * particles.initial_position[p];
+                }
+              mass               = Utilities::MPI::sum(mass, comm);
+              first              = Utilities::MPI::sum(first, comm);
+              centre             = Point<2>(first / mass);
+              const auto &global = state.grid->relevant_global_indices();
+              const std::vector<Point<2>> all =
+                state.space->control_points(state.dof_handler);
+              control_points.resize(global.size());
+              for (std::size_t l = 0; l < global.size(); ++l)
+                control_points[l] = all[global[l]];
+            }
+          // Current centre of mass, for the angle.
+          double       mass = 0;
+          Tensor<1, 2> first;
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              mass += particles.mass[p];
+              first += particles.mass[p] * particles.position[p];
+            }
+          const Point<2> now(Utilities::MPI::sum(first, comm) /
+                             Utilities::MPI::sum(mass, comm));
+
+          const unsigned int  n    = state.grid->dofs_per_cell;
+          const unsigned int *dofs = state.grid->cell_dofs().data();
+          const bool          known_points =
+            control_points.size() ==
+            state.grid->relevant_global_indices().size();
+          double h = 0, along = 0, across = 0, s = 0;
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const double        m = particles.mass[p];
+              const Point<2>     &x = particles.position[p];
+              const Tensor<2, 2> &C = particles.affine[p];
+              const Tensor<1, 2>  r = x - centre;
+              h += m * cross(r, particles.velocity[p]);
+              s += m * r.norm() * particles.velocity[p].norm();
+              if (C.norm_square() > 0 && known_points)
+                {
+                  const unsigned int base = particles.cell[p] * n;
+                  const double      *phi  = &state.shape_values[p * n];
+                  for (unsigned int k = 0; k < n; ++k)
+                    {
+                      const Tensor<1, 2> d = control_points[dofs[base + k]] - x;
+                      h += m * phi[k] * cross(d, C * d);
+                    }
+                }
+              const Tensor<1, 2> r0 = particles.initial_position[p] - centre;
+              const Tensor<1, 2> r1 = x - now;
+              across += m * cross(r0, r1);
+              along += m * (r0 * r1);
+            }
+          Values v;
+          v.angular_momentum = Utilities::MPI::sum(h, comm);
+          v.rotation_angle   = std::atan2(Utilities::MPI::sum(across, comm),
+                                        Utilities::MPI::sum(along, comm));
+          if (!initialized)
+            {
+              initial     = v;
+              scale       = Utilities::MPI::sum(s, comm);
+              initialized = true;
+            }
+          last = v;
+          return v;
+        }
+    }
+
+    template <int dim>
+    void
+    RotationStatistics<dim>::add_columns(const Values &values,
+                                         TableHandler &statistics)
+    {
+      if (dim == 1)
+        return;
+      statistics.add_value("angular_momentum", values.angular_momentum);
+      statistics.add_value("rotation_angle", values.rotation_angle);
+      statistics.set_scientific("angular_momentum", true);
+      statistics.set_precision("angular_momentum", 8);
+      statistics.set_scientific("rotation_angle", true);
+      statistics.set_precision("rotation_angle", 8);
+    }
+
+    template <int dim>
+    void
+    RotationStatistics<dim>::fill_summary(Summary &summary) const
+    {
+      if (dim == 1 || !initialized)
+        return;
+      summary.set("angular_momentum_initial", initial.angular_momentum);
+      summary.set("angular_momentum_final", last.angular_momentum);
+      // Relative to the initial value if the body spins, else to the
+      // scale sum m |x - c| |v| (a body that should not spin).
+      const double reference =
+        std::abs(initial.angular_momentum) > 1e-2 * scale ?
+          std::abs(initial.angular_momentum) :
+          scale;
+      if (reference > 0)
+        summary.set("angular_momentum_relative_change",
+                    (last.angular_momentum - initial.angular_momentum) /
+                      reference);
+      summary.set("rotation_angle_final", last.rotation_angle);
+    }
+
+    template class RotationStatistics<1>;
+    template class RotationStatistics<2>;
+  } // namespace Postprocess
+} // namespace psmpm
