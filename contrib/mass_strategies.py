@@ -18,7 +18,8 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BIN = os.environ.get("PSMPM_BINARY", os.path.join(ROOT, "build", "psmpm"))
-STRATEGIES = ["consistent", "lumped", "partially lumped", "deactivate", "extrapolate"]
+STRATEGIES = ["consistent", "lumped", "partially lumped", "extrapolate",
+              "ghost penalty"]
 
 
 def run(prm, sets):

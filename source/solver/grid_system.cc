@@ -46,8 +46,17 @@ namespace psmpm
                         "0.05",
                         Patterns::Double(0, 1),
                         "Relative bound M_ii / M_ii(full support) below which "
-                        "a function counts as poorly supported (deactivate, "
+                        "a function counts as poorly supported ("
                         "extrapolate).");
+      prm.declare_entry("Stabilization",
+                        "1",
+                        Patterns::Double(0),
+                        "Weight of the stabilised consistent strategies: "
+                        "gamma of 'ghost penalty' (gamma rho (1 - fill) "
+                        "int (u - Pu)^2 on face patches next to cells that "
+                        "are not filled), alpha of 'fictitious mass' (alpha "
+                        "rho (1 - fill) int N_k N_l on every cell); fill: "
+                        "particle mass over rho |cell|, at most 1.");
       MassStrategyRegistry<dim>::instance().declare_parameters(prm);
       prm.leave_subsection();
     }
@@ -62,6 +71,7 @@ namespace psmpm
       tolerance      = prm.get_double("Solver tolerance");
       max_iterations = prm.get_integer("Maximum iterations");
       preconditioner = prm.get("Preconditioner");
+      stabilization  = prm.get_double("Stabilization");
       prm.leave_subsection();
       AssertThrow(tolerance > 0 && tolerance < 1,
                   ExcMessage("Mass matrix/Solver tolerance = " +
@@ -92,7 +102,8 @@ namespace psmpm
       const std::array<std::set<types::boundary_id>, dim> &fixed,
       const double                                         density)
     {
-      owned = dof_handler.locally_owned_dofs();
+      this->density = density;
+      owned         = dof_handler.locally_owned_dofs();
       if (mass_strategy->needs_all_dofs())
         // Constraints may tie a vertex to one two cells away: keep every
         // DoF at hand (the mesh is replicated anyway).
@@ -209,6 +220,31 @@ namespace psmpm
                                         dsp,
                                         active_constraints[d],
                                         true);
+      if (mass_strategy->needs_neighbor_couplings())
+        {
+          // Every DoF of the cells around a vertex with every other: the
+          // couplings of patch blocks over two cells that share a vertex.
+          std::vector<types::global_dof_index> dofs(dofs_per_cell);
+          std::vector<std::vector<types::global_dof_index>> cell_dofs(n_cells);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(dofs);
+              cell_dofs[cell->active_cell_index()] = dofs;
+            }
+          for (const auto &around : vertices.cells)
+            {
+              std::vector<types::global_dof_index> patch;
+              for (const unsigned int c : around)
+                patch.insert(patch.end(),
+                             cell_dofs[c].begin(),
+                             cell_dofs[c].end());
+              std::sort(patch.begin(), patch.end());
+              patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+              for (const auto i : patch)
+                if (relevant.is_element(i))
+                  dsp.add_entries(i, patch.begin(), patch.end(), true);
+            }
+        }
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       for (unsigned int d = 0; d < dim; ++d)
         matrix[d].reinit(owned, owned, dsp, comm);
@@ -400,6 +436,7 @@ namespace psmpm
         }
       stats.min_relative_diagonal = Utilities::MPI::min(rmin, comm);
 
+      patches.clear();
       if (mass_strategy->prepare(*this, diagonal))
         build_sparsity();
       for (unsigned int d = 0; d < dim; ++d)
@@ -426,11 +463,23 @@ namespace psmpm
                                                            dofs,
                                                            matrix[d]);
         }
+      for (const auto &patch : patches)
+        {
+          std::vector<types::global_dof_index> patch_dofs(patch.dofs.size());
+          for (unsigned int k = 0; k < patch.dofs.size(); ++k)
+            patch_dofs[k] = relevant_global[patch.dofs[k]];
+          active_constraints[d].distribute_local_to_global(patch.matrix,
+                                                           patch_dofs,
+                                                           matrix[d]);
+        }
       matrix[d].compress(VectorOperation::add);
       // A DoF whose support holds no particle has an empty row: give it
       // a unit diagonal so that its (zero) coefficient is well defined.
+      // (Rows of patch blocks, e.g. the ghost penalty, may hold a DoF
+      // without particle mass: it keeps its row.)
       for (const auto i : owned)
-        if (lumped[i] == 0 && !active_constraints[d].is_constrained(i))
+        if (lumped[i] == 0 && !active_constraints[d].is_constrained(i) &&
+            matrix[d].diag_element(i) == 0)
           matrix[d].set(i, i, 1.0);
       matrix[d].compress(VectorOperation::insert);
       if (parameters.preconditioner == "amg")

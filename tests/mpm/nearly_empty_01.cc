@@ -24,7 +24,7 @@ main(int argc, char **argv)
   for (const std::string type : {default_type,
                                  std::string("consistent"),
                                  std::string("lumped"),
-                                 std::string("deactivate"),
+                                 std::string("ghost penalty"),
                                  std::string("extrapolate")})
     {
       std::vector<std::string> args = {std::string(PSMPM_SOURCE_DIR) +

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -53,6 +54,9 @@ namespace psmpm
         unsigned int max_iterations = 1000;
         std::string  preconditioner = "jacobi";
         double       threshold      = 0.05;
+        /// Fictitious mass fraction alpha of the stabilised strategies
+        /// (Mass matrix/Stabilization).
+        double stabilization = 1;
       };
 
       struct SolveStatistics
@@ -75,6 +79,15 @@ namespace psmpm
         std::vector<double>         mass;
         std::vector<double>         lumped;
         std::vector<Tensor<1, dim>> rhs;
+      };
+
+      /// A dense block over a set of DoFs (local relevant numbering) that a
+      /// strategy adds to the matrix of every component (e.g. a ghost
+      /// penalty over the union of two face neighbours).
+      struct PatchBlock
+      {
+        std::vector<unsigned int> dofs;
+        FullMatrix<double>        matrix;
       };
 
       /// The vertex view of the DoFs, for vertex-wise strategies.
@@ -145,6 +158,13 @@ namespace psmpm
       {
         return cell_dof_indices;
       }
+      /// Patch blocks of the step: cleared before MassStrategy::prepare(),
+      /// assembled after the cell blocks.
+      std::vector<PatchBlock> &
+      patch_blocks()
+      {
+        return patches;
+      }
       const std::vector<unsigned int> &
       owned_cells() const
       {
@@ -201,6 +221,14 @@ namespace psmpm
         active_constraints[d].clear();
         active_constraints[d].copy_from(c);
       }
+      /// The assembled mass matrix of component d (matrix strategies,
+      /// after assemble_mass; rows of DoFs without particle mass carry a
+      /// unit diagonal).
+      const TrilinosWrappers::SparseMatrix &
+      mass_matrix(const unsigned int d) const
+      {
+        return matrix[d];
+      }
       /// Lumped mass in local relevant numbering (after assemble_mass).
       const std::vector<double> &
       lumped_mass() const
@@ -212,6 +240,13 @@ namespace psmpm
       full_support_diagonal() const
       {
         return local_full_diagonal;
+      }
+      /// The material density given to reinit() (rho of the fictitious
+      /// mass and of the full-support diagonal).
+      double
+      reference_density() const
+      {
+        return density;
       }
       const Basis::Space<dim> &
       get_space() const
@@ -266,6 +301,7 @@ namespace psmpm
       std::vector<unsigned int>                             cell_dof_indices;
       std::vector<unsigned int>                             owned_cell_indices;
       CellArrays                                            cells;
+      std::vector<PatchBlock>                               patches;
       VertexTables                                          vertices;
       std::array<AffineConstraints<double>, dim>            dirichlet;
       std::array<AffineConstraints<double>, dim>            active_constraints;
@@ -280,6 +316,7 @@ namespace psmpm
       std::vector<double>                   local_lumped;
       std::vector<double>                   local_full_diagonal;
       SolveStatistics                       stats;
+      double                                density = 0;
     };
   } // namespace Solver
 } // namespace psmpm

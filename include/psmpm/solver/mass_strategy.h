@@ -54,11 +54,22 @@ namespace psmpm
         return false;
       }
 
+      /// true if the strategy adds patch blocks that couple the DoFs of two
+      /// cells sharing a vertex (the sparsity then couples every DoF of the
+      /// cells around a vertex with every other).
+      virtual bool
+      needs_neighbor_couplings() const
+      {
+        return false;
+      }
+
       /**
        * Called once per step after the per-cell particle mass matrices
        * are accumulated and before they are assembled. @p diagonal is the
        * particle diagonal M_ii in local relevant numbering. Returns true
-       * if the step's constraints changed (the sparsity is rebuilt).
+       * if the step's constraints changed (the sparsity is rebuilt). It
+       * may also add patch blocks (GridSystem::patch_blocks()), assembled
+       * with the cell blocks.
        */
       virtual bool
       prepare(GridSystem<dim> &grid, const std::vector<double> &diagonal)

@@ -1,7 +1,9 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <psmpm/solver/mass_strategies/poorly_supported.h>
+#include <deal.II/base/exceptions.h>
+
+#include <psmpm/solver/mass_strategy.h>
 
 namespace psmpm
 {
@@ -9,21 +11,37 @@ namespace psmpm
   {
     namespace
     {
-      /// Poorly supported functions are switched off for the step.
+      /**
+       * Removed. `deactivate` constrained the functions of poorly
+       * supported vertices to zero for the step: a zero Dirichlet
+       * condition inside the body, which holds the particles near it
+       * (measured on the free rotating block, doc/stability.md: it turns
+       * by 0 instead of a quarter turn). Setting the switched-off
+       * coefficients from their active neighbours instead is exactly
+       * `extrapolate`, so the name is kept only to point there.
+       */
       template <int dim>
-      class Deactivate : public PoorlySupported<dim>
+      class Deactivate : public MassStrategy<dim>
       {
       public:
-        explicit Deactivate(const double threshold)
-          : PoorlySupported<dim>(threshold, false)
+        explicit Deactivate(const double)
         {
+          AssertThrow(
+            false,
+            ExcMessage(
+              "Mass matrix/Type = deactivate was removed: constraining "
+              "poorly supported functions to zero pins the material (a "
+              "fixed support inside the body, doc/stability.md). Use "
+              "'fictitious mass' (consistent mass, stabilised where cells "
+              "empty), 'partially lumped' or 'extrapolate' (switched-off "
+              "functions continued from their neighbours)."));
         }
       };
     } // namespace
 
     RegisterForDims<MassStrategyRegistry, Deactivate> register_deactivate(
       "deactivate",
-      "functions with a particle diagonal below Threshold x their "
-      "full-support diagonal set to zero for the step");
+      "removed (it pinned the material); selecting it is an error that "
+      "names the replacements");
   } // namespace Solver
 } // namespace psmpm

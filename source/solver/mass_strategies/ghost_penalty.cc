@@ -1,0 +1,249 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi.templates.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <psmpm/solver/grid_system.h>
+#include <psmpm/solver/mass_strategies/cell_fill.h>
+#include <psmpm/solver/mass_strategy.h>
+
+#include <cmath>
+#include <set>
+
+namespace psmpm
+{
+  namespace Solver
+  {
+    namespace
+    {
+      /**
+       * Volume ghost penalty (local projection stabilisation, Burman) of
+       * the particle mass matrix: for every pair of cells c, K that share
+       * a vertex, both holding particles and one not filled,
+       *
+       *   S_cK(u, v) = gamma rho (1 - min(fill_c, fill_K))
+       *                int_{c u K} (u - P u)(v - P v),
+       *
+       * P the L2 projection onto the polynomials of the space's degree on
+       * the pair c u K, for pairs of which both cells hold particles
+       * (gamma: Mass matrix/Stabilization; fill: particle
+       * mass over rho |cell|, clipped to [0, 1]). S vanishes for every
+       * polynomial of that degree (the space reproduces them), so
+       *  - constants: row sums, hence momentum, are those of the particle
+       *    matrix;
+       *  - affine fields (rigid rotation): the projection of an affine
+       *    particle velocity stays exact, as with the consistent matrix;
+       *  - filled cells: S = 0, the consistent matrix exactly.
+       * What S controls is the deviation of a function on a sparse cell
+       * from the polynomial that its well filled neighbour fixes, so a
+       * function whose support holds a single particle at its edge is no
+       * longer free: the matrix stays symmetric positive definite with a
+       * bounded condition number. Pairs across a vertex, not only across
+       * a face, because a particle can enter an empty cell through a
+       * vertex (criss-cross meshes). Pair matrices depend on the mesh only
+       * and are computed once; each step only weights them.
+       */
+      template <int dim>
+      class GhostPenalty : public MassStrategy<dim>
+      {
+      public:
+        bool
+        needs_neighbor_couplings() const override
+        {
+          return true;
+        }
+
+        bool
+        prepare(GridSystem<dim> &grid, const std::vector<double> &) override
+        {
+          const double gamma = grid.parameters.stabilization;
+          if (gamma == 0)
+            return false;
+          if (faces.empty())
+            compute_pair_patches(grid);
+          std::vector<double> fill = cell_fill(grid, measure);
+          {
+            std::vector<double> all(fill.size());
+            Utilities::MPI::max(fill, grid.get_communicator(), all);
+            fill.swap(all);
+          }
+          const auto       &active = grid.lumped_mass();
+          const double      rho    = grid.reference_density();
+          auto             &blocks = grid.patch_blocks();
+          std::vector<bool> treated(active.size(), false);
+          for (const auto &f : faces)
+            {
+              const double w =
+                gamma * rho *
+                (1. - std::min(fill[f.cells[0]], fill[f.cells[1]]));
+              if (!(w > 0))
+                continue;
+              // Both cells hold particles: the pair's polynomial is fixed
+              // by them (a pair of a filled and an empty cell would make
+              // the empty cell's functions follow a polynomial through
+              // nothing). All DoFs of the pair take part, also those
+              // without particle mass (a Powell-Sabin function can vanish
+              // at every particle of a cell it lives on): they follow the
+              // polynomial extension.
+              if (!(fill[f.cells[0]] > 0 && fill[f.cells[1]] > 0))
+                continue;
+              typename GridSystem<dim>::PatchBlock b;
+              b.dofs = f.dofs;
+              b.matrix.reinit(f.S.m(), f.S.n());
+              b.matrix.add(w, f.S);
+              blocks.push_back(std::move(b));
+              for (const unsigned int l : f.dofs)
+                treated[l] = true;
+            }
+          unsigned int n_treated = 0;
+          const auto  &global    = grid.relevant_global_indices();
+          for (unsigned int l = 0; l < treated.size(); ++l)
+            n_treated +=
+              treated[l] && grid.locally_owned_dofs().is_element(global[l]);
+          grid.set_n_treated_dofs(
+            Utilities::MPI::sum(n_treated, grid.get_communicator()));
+          return false;
+        }
+
+      private:
+        struct Face
+        {
+          std::array<unsigned int, 2> cells;
+          std::vector<unsigned int>   dofs; ///< local relevant, unique
+          FullMatrix<double>          S;    ///< int (u - Pu)(v - Pv)
+        };
+
+        /// Monomials of degree <= k in (x - x0) / h.
+        static std::vector<double>
+        monomials(const Point<dim>  &x,
+                  const Point<dim>  &x0,
+                  const double       h,
+                  const unsigned int k)
+        {
+          std::vector<double>  r;
+          const Tensor<1, dim> y = (x - x0) / h;
+          if (dim == 1)
+            for (unsigned int a = 0; a <= k; ++a)
+              r.push_back(std::pow(y[0], a));
+          else
+            for (unsigned int total = 0; total <= k; ++total)
+              for (unsigned int a = 0; a <= total; ++a)
+                r.push_back(std::pow(y[0], total - a) *
+                            std::pow(y[dim - 1], a));
+          return r;
+        }
+
+        /// One patch per pair of cells sharing a vertex, one of them owned
+        /// (each pair once over all ranks: the rank of the smaller
+        /// subdomain).
+        void
+        compute_pair_patches(const GridSystem<dim> &grid)
+        {
+          const auto                          &space = grid.get_space();
+          const auto                          &dh    = grid.get_dof_handler();
+          const auto                          &rel   = grid.relevant_dofs();
+          const unsigned int                   n     = grid.dofs_per_cell;
+          const unsigned int                   k     = space.degree();
+          std::vector<types::global_dof_index> dofs(n);
+          std::vector<double>                  values(n);
+          std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
+            grid.n_cells);
+          for (const auto &cell : dh.active_cell_iterators())
+            cells[cell->active_cell_index()] = cell;
+          std::set<std::pair<unsigned int, unsigned int>> pairs;
+          for (const auto &around : grid.vertex_tables().cells)
+            for (const unsigned int a : around)
+              for (const unsigned int b : around)
+                if (a < b)
+                  pairs.emplace(a, b);
+          for (const auto &[a, b] : pairs)
+            {
+              {
+                const auto &cell  = cells[a];
+                const auto &other = cells[b];
+                if (!cell->is_locally_owned() && !other->is_locally_owned())
+                  continue;
+                if (cell->is_locally_owned() != other->is_locally_owned() &&
+                    std::min(cell->subdomain_id(), other->subdomain_id()) !=
+                      Utilities::MPI::this_mpi_process(grid.get_communicator()))
+                  continue;
+                Face face;
+                face.cells = {cell->active_cell_index(),
+                              other->active_cell_index()};
+                // Patch DoFs and, per cell, the map cell DoF -> patch.
+                std::array<std::vector<unsigned int>, 2> map;
+                std::vector<types::global_dof_index>     patch;
+                for (unsigned int s = 0; s < 2; ++s)
+                  {
+                    (s == 0 ? cell : other)->get_dof_indices(dofs);
+                    for (const auto g : dofs)
+                      {
+                        auto it = std::find(patch.begin(), patch.end(), g);
+                        map[s].push_back(it - patch.begin());
+                        if (it == patch.end())
+                          patch.push_back(g);
+                      }
+                  }
+                for (const auto g : patch)
+                  face.dofs.push_back(rel.index_within_set(g));
+                const unsigned int m = patch.size();
+                // Polynomials centred between the cells, scaled by them.
+                const Point<dim> x0 = (cell->center() + other->center()) / 2.;
+                const double h = std::max(cell->diameter(), other->diameter());
+                const unsigned int np = monomials(x0, x0, h, k).size();
+                FullMatrix<double> Mw(m, m), B(np, m), G(np, np);
+                for (unsigned int s = 0; s < 2; ++s)
+                  {
+                    const unsigned int    c = face.cells[s];
+                    const Quadrature<dim> q = space.cell_quadrature(dh, c);
+                    for (unsigned int i = 0; i < q.size(); ++i)
+                      {
+                        space.evaluate(c, q.point(i), values.data(), nullptr);
+                        const auto   p = monomials(q.point(i), x0, h, k);
+                        const double w = q.weight(i);
+                        for (unsigned int a = 0; a < n; ++a)
+                          {
+                            for (unsigned int b = 0; b < n; ++b)
+                              Mw(map[s][a], map[s][b]) +=
+                                w * values[a] * values[b];
+                            for (unsigned int r = 0; r < np; ++r)
+                              B(r, map[s][a]) += w * p[r] * values[a];
+                          }
+                        for (unsigned int r = 0; r < np; ++r)
+                          for (unsigned int t = 0; t < np; ++t)
+                            G(r, t) += w * p[r] * p[t];
+                      }
+                  }
+                // S = Mw - B^T G^-1 B.
+                G.gauss_jordan();
+                FullMatrix<double> GB(np, m);
+                G.mmult(GB, B);
+                face.S = Mw;
+                FullMatrix<double> BtGB(m, m);
+                B.Tmmult(BtGB, GB);
+                face.S.add(-1., BtGB);
+                // Exact symmetry.
+                for (unsigned int a = 0; a < m; ++a)
+                  for (unsigned int b = a + 1; b < m; ++b)
+                    face.S(a, b) = face.S(b, a) =
+                      0.5 * (face.S(a, b) + face.S(b, a));
+                faces.push_back(std::move(face));
+              }
+            }
+        }
+
+        std::vector<Face>   faces;
+        std::vector<double> measure;
+      };
+    } // namespace
+
+    RegisterForDims<MassStrategyRegistry, GhostPenalty> register_ghost_penalty(
+      "ghost penalty",
+      "consistent particle mass plus gamma rho (1 - fill) int (u - Pu)^2 on "
+      "each pair of cells sharing a vertex, one not filled (P: "
+      "polynomials of the space's degree on the pair; gamma = "
+      "Stabilization); exact for polynomials, momentum kept");
+  } // namespace Solver
+} // namespace psmpm
