@@ -166,6 +166,18 @@ end
             while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
               m.pop_back();
             m.erase(0, m.find_first_not_of(" \n"));
+            // One line: a nested message's line breaks become spaces.
+            std::string line;
+            for (const char c : m)
+              if (c == '\n')
+                {
+                  while (!line.empty() && line.back() == ' ')
+                    line.pop_back();
+                  line += ' ';
+                }
+              else if (c != ' ' || line.empty() || line.back() != ' ')
+                line += c;
+            m = line;
             if (!m.empty())
               return m;
             return d->get_exc_name();
@@ -434,9 +446,22 @@ end
               limits.check_entries(prm);
               check_function_constants(prm);
               solver = Simulator::create_simulator(dimension, comm);
-              solver->parse_parameters(prm);
-              limits.check_scene(prm);
-              solver->setup();
+              {
+                // deal.II's FunctionParser prints the muParser error to
+                // std::cerr before it throws; psmpm's message says it.
+                std::ostringstream parser_noise;
+                struct Restore
+                {
+                  std::streambuf *old;
+                  ~Restore()
+                  {
+                    std::cerr.rdbuf(old);
+                  }
+                } restore{std::cerr.rdbuf(parser_noise.rdbuf())};
+                solver->parse_parameters(prm);
+                limits.check_scene(prm);
+                solver->setup();
+              }
               solver->check_initial_state();
               solver->quiet                = test_output;
               solver->output_time_interval = time_interval;
