@@ -3,7 +3,7 @@
 // a second run into the same directory is refused while the first one
 // lives (exit code 2); SIGTERM ends the first run after its step, with its
 // output, summary.json "status": "interrupted" and exit code 143; the
-// lock is released.
+// lock is released. SIGINT (Ctrl-C) gives exit code 130.
 #include "../app_tests.h"
 
 #include <chrono>
@@ -126,4 +126,25 @@ main()
                   fs::exists("long/particles-" +
                              Utilities::int_to_string(n, 5) + ".pvtu"));
     }
+
+  // Ctrl-C: the same, with exit code 130.
+  fs::remove_all("ctrl_c");
+  std::vector<std::string> ctrl_c = args;
+  ctrl_c[1]                       = "Output directory=ctrl_c";
+  const pid_t pid2                = spawn(ctrl_c, "ctrl_c.txt");
+  running                         = false;
+  for (unsigned int i = 0; i < 600 && !running; ++i)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      running = read_file("ctrl_c/log.txt").find("ETA") != std::string::npos;
+    }
+  PSMPM_CHECK(out, running);
+  kill(pid2, SIGINT);
+  code = wait_for(pid2);
+  out << "SIGINT: exit code " << code << std::endl;
+  const std::string summary2 = read_file("ctrl_c/summary.json");
+  PSMPM_CHECK(out,
+              summary2.find("\"status\": \"interrupted\"") !=
+                std::string::npos);
+  PSMPM_CHECK(out, summary2.find("\"signal\": 2") != std::string::npos);
 }
