@@ -15,6 +15,7 @@
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/solver/l2_projection.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -614,6 +615,10 @@ end
     int
     run(int argc, char **argv, MPI_Comm comm)
     {
+      // A closed pipe or terminal (psmpm | head) must not kill a run in
+      // the middle of writing: the screen output is lost, log.txt and
+      // the output files are not.
+      std::signal(SIGPIPE, SIG_IGN);
       return run(std::vector<std::string>(argv + 1, argv + argc), comm);
     }
   } // namespace App

@@ -5,14 +5,15 @@
 
 #include <psmpm/app/output_directory.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <regex>
-#include <sstream>
-#include <fcntl.h>
 #include <signal.h>
+#include <sstream>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
@@ -202,21 +203,22 @@ namespace psmpm
         {
           if (c == EOF)
             return traits_type::not_eof(c);
+          // Succeeds if either copy does: a closed terminal must not stop
+          // the log.
           const int ra = a->sputc(static_cast<char>(c));
-          b->sputc(static_cast<char>(c));
-          return ra;
+          const int rb = b->sputc(static_cast<char>(c));
+          return ra != EOF ? ra : rb;
         }
         std::streamsize
         xsputn(const char *s, std::streamsize n) override
         {
-          b->sputn(s, n);
-          return a->sputn(s, n);
+          return std::max(a->sputn(s, n), b->sputn(s, n));
         }
         int
         sync() override
         {
-          b->pubsync();
-          return a->pubsync();
+          const int rb = b->pubsync();
+          return a->pubsync() == 0 ? 0 : rb;
         }
 
       private:
