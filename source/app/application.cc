@@ -93,8 +93,9 @@ end
         "  ends with 3 (non-finite values), 4 (energy growth), 5 (particle left\n"
         "  the mesh), 6 (non-positive volume) or 7 (solver not converging);\n"
         "  8: an output file could not be written; 128 + N: stopped by signal\n"
-        "  N (SIGINT 130, SIGTERM 143) after finishing the step and writing the\n"
-        "  output (status \"interrupted\" in summary.json).\n";
+        "  N (SIGINT 130, SIGTERM 143, SIGUSR1 138: what mpirun forwards) after\n"
+        "  finishing the step and writing the output (status \"interrupted\" in\n"
+        "  summary.json).\n";
 
       /**
        * A deal.II exception's what() nested in another message (an

@@ -12,7 +12,7 @@ namespace psmpm
   namespace
   {
     volatile std::sig_atomic_t received_signal = 0;
-    struct sigaction           previous_int, previous_term;
+    struct sigaction           previous_int, previous_term, previous_usr1;
 
     extern "C" void
     record_signal(int signal)
@@ -37,12 +37,16 @@ namespace psmpm
     action.sa_flags = SA_RESTART;
     sigaction(SIGINT, &action, &previous_int);
     sigaction(SIGTERM, &action, &previous_term);
+    // mpirun (Open MPI) kills the ranks on SIGINT/SIGTERM but forwards
+    // SIGUSR1 to all of them.
+    sigaction(SIGUSR1, &action, &previous_usr1);
   }
 
   StopRequest::~StopRequest()
   {
     sigaction(SIGINT, &previous_int, nullptr);
     sigaction(SIGTERM, &previous_term, nullptr);
+    sigaction(SIGUSR1, &previous_usr1, nullptr);
   }
 
   int

@@ -12,6 +12,7 @@
 #include <psmpm/simulator/simulator.h>
 
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <map>
 
@@ -571,9 +572,10 @@ namespace psmpm
         {
           summary.set("reason",
                       "stopped by signal " + std::to_string(stop_signal) +
-                        (stop_signal == 2  ? " (SIGINT)" :
-                         stop_signal == 15 ? " (SIGTERM)" :
-                                             ""));
+                        (stop_signal == SIGINT  ? " (SIGINT)" :
+                         stop_signal == SIGTERM ? " (SIGTERM)" :
+                         stop_signal == SIGUSR1 ? " (SIGUSR1)" :
+                                                  ""));
           summary.set_integer("signal", stop_signal);
         }
       if (status == Status::unstable)

@@ -9,7 +9,9 @@
 namespace psmpm
 {
   /**
-   * SIGINT and SIGTERM ask a run to stop: while a StopRequest exists, the
+   * SIGINT, SIGTERM and SIGUSR1 (which mpirun forwards to every rank,
+   * while it kills them on SIGINT and SIGTERM) ask a run to stop: while a
+   * StopRequest exists, the
    * handlers only record the signal; the time loop asks for it after each
    * step (all ranks agree with one reduction), finishes the step, writes
    * its output and summary.json ("status": "interrupted") and psmpm exits
