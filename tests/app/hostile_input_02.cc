@@ -57,6 +57,14 @@ main(int argc, char **argv)
     {"output directory inside a file",
      {"case.prm", "--set", "Output directory=a_file/sub", "--set", quick},
      {"Output directory", "a_file/sub", "cannot create", "case.prm"}},
+    // No permission, even for root: sysfs refuses new directories; in
+    // /proc/self no file can be created.
+    {"output directory without permission",
+     {"case.prm", "--set", "Output directory=/sys/psmpm_test", "--set", quick},
+     {"Output directory", "/sys/psmpm_test", "cannot create", "case.prm"}},
+    {"output directory where no file can be created",
+     {"case.prm", "--set", "Output directory=/proc/self", "--set", quick},
+     {"Output directory", "/proc/self", "cannot create", "case.prm"}},
     {"empty output directory",
      {"case.prm", "--set", "Output directory="},
      {"Output directory", "empty", "case.prm"}},
