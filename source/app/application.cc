@@ -15,6 +15,7 @@
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/solver/l2_projection.h>
 
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -532,6 +533,17 @@ end
               << "psmpm " << version() << ": " << where << ", output in "
               << std::filesystem::absolute(dir).lexically_normal().string()
               << " (screen output also in log.txt)" << std::endl;
+          if (solver)
+            {
+              // Collective: every rank computes it.
+              const auto size = solver->estimate_size();
+              if (root && !test_output)
+                std::cout << "psmpm: about " << size.steps << " steps, "
+                          << size.n_outputs << " outputs, "
+                          << std::max(1.,
+                                      std::round(size.output_bytes / 1048576.))
+                          << " MiB of output (estimated)" << std::endl;
+            }
           std::string error;
           if (root)
             try
