@@ -120,6 +120,9 @@ namespace psmpm
       setup() override;
 
       /// Time loop; writes output into @p output_directory (which exists).
+      /// Stops after the step in which any rank received a StopRequest
+      /// signal (Status::interrupted); throws ExcWriteFailed on every rank
+      /// if any rank could not write a file.
       Status
       run(const std::string &output_directory) override;
 
