@@ -6,10 +6,17 @@
 #include <deal.II/base/utilities.h>
 
 #include <psmpm/app/application.h>
+#include <psmpm/app/output_directory.h>
+#include <psmpm/app/run_limits.h>
+#include <psmpm/base/checked_file.h>
+#include <psmpm/base/stop_request.h>
+#include <psmpm/base/version.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/solver/l2_projection.h>
 
+#include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -81,10 +88,74 @@ end
         "  --set \"Subsection/Entry=value\"  override one entry (repeatable)\n"
         "  --validate            check the input (parameters, mesh, time step), write nothing\n"
         "  --print-parameters    print all entries with defaults and documentation\n"
+        "  --version             print the version\n"
         "  --help                this text\n"
         "Exit codes: 0 success, 1 internal error, 2 bad input; an unstable run\n"
         "  ends with 3 (non-finite values), 4 (energy growth), 5 (particle left\n"
-        "  the mesh), 6 (non-positive volume) or 7 (solver not converging).\n";
+        "  the mesh), 6 (non-positive volume) or 7 (solver not converging);\n"
+        "  8: an output file could not be written; 128 + N: stopped by signal\n"
+        "  N (SIGINT 130, SIGTERM 143, SIGUSR1 138: what mpirun forwards) after\n"
+        "  finishing the step and writing the output (status \"interrupted\" in\n"
+        "  summary.json).\n";
+
+      /**
+       * A deal.II exception's what() nested in another message (an
+       * ExcMessage built from e.what()) carries the source location, the
+       * violated condition and a stack trace; keep only its additional
+       * information.
+       */
+      std::string
+      strip_nested(std::string m)
+      {
+        const std::string dashes(56, '-');
+        for (std::size_t a;
+             (a = m.find("An error occurred in line")) != std::string::npos;)
+          {
+            std::size_t begin = m.rfind(dashes, a);
+            if (begin == std::string::npos)
+              begin = a;
+            const std::size_t info_key = m.find("Additional information:", a);
+            const std::size_t stack    = m.find("Stacktrace:", a);
+            std::size_t       end      = m.size();
+            if (stack != std::string::npos)
+              {
+                const std::size_t close = m.find(dashes, stack + 25);
+                end =
+                  close == std::string::npos ? m.size() : close + dashes.size();
+              }
+            else
+              {
+                const std::size_t close = m.find(dashes, a);
+                if (close != std::string::npos)
+                  end = close + dashes.size();
+              }
+            std::string info;
+            if (info_key != std::string::npos && info_key < end)
+              {
+                const std::size_t from = info_key + 23;
+                const std::size_t to =
+                  stack != std::string::npos && stack < end ? stack : end;
+                info            = m.substr(from, to - from);
+                const auto last = info.rfind(dashes);
+                if (last != std::string::npos)
+                  info.erase(last);
+              }
+            // One line, single spaces.
+            std::string flat;
+            for (const char c : info)
+              if (c == '\n' || c == ' ' || c == '\t')
+                {
+                  if (!flat.empty() && flat.back() != ' ')
+                    flat += ' ';
+                }
+              else
+                flat += c;
+            while (!flat.empty() && flat.back() == ' ')
+              flat.pop_back();
+            m.replace(begin, end - begin, flat);
+          }
+        return m;
+      }
 
       /// The message of an exception without deal.II's source location.
       std::string
@@ -94,14 +165,58 @@ end
           {
             std::ostringstream s;
             d->print_info(s);
-            std::string m = s.str();
+            std::string m = strip_nested(s.str());
             while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
               m.pop_back();
+            m.erase(0, m.find_first_not_of(" \n"));
+            // One line: a nested message's line breaks become spaces.
+            std::string line;
+            for (const char c : m)
+              if (c == '\n')
+                {
+                  while (!line.empty() && line.back() == ' ')
+                    line.pop_back();
+                  line += ' ';
+                }
+              else if (c != ' ' || line.empty() || line.back() != ' ')
+                line += c;
+            m = line;
             if (!m.empty())
               return m;
             return d->get_exc_name();
           }
-        return e.what();
+        return strip_nested(e.what());
+      }
+
+      /// Initial conditions/Function constants: name=value with a number
+      /// (the simulator would only say "Can't convert <abc> to a double").
+      void
+      check_function_constants(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Initial conditions");
+        const std::string constants = prm.get("Function constants");
+        prm.leave_subsection();
+        for (const auto &c : Utilities::split_string_list(constants, ','))
+          {
+            const auto kv = Utilities::split_string_list(c, '=');
+            AssertThrow(kv.size() == 2 && !kv[0].empty(),
+                        ExcMessage("Initial conditions/Function constants = '" +
+                                   constants + "': '" + c +
+                                   "' is not name=value."));
+            bool number = true;
+            try
+              {
+                Utilities::string_to_double(kv[1]);
+              }
+            catch (...)
+              {
+                number = false;
+              }
+            AssertThrow(number,
+                        ExcMessage("Initial conditions/Function constants = '" +
+                                   constants + "': the value of " + kv[0] +
+                                   ", '" + kv[1] + "', is not a number."));
+          }
       }
 
       /// Relative mesh files are taken relative to the parameter file.
@@ -145,6 +260,7 @@ end
         bool                     validate         = false;
         bool                     print_parameters = false;
         bool                     help             = false;
+        bool                     version          = false;
       };
 
       CommandLine
@@ -156,6 +272,8 @@ end
             const std::string &a = args[i];
             if (a == "--help" || a == "-h")
               cl.help = true;
+            else if (a == "--version")
+              cl.version = true;
             else if (a == "--validate")
               cl.validate = true;
             else if (a == "--print-parameters")
@@ -221,8 +339,24 @@ end
                         "output",
                         Patterns::FileName(Patterns::FileName::output),
                         "Directory for VTU/PVD output, statistics.txt, "
-                        "parameters.prm and summary.json; created if needed.");
+                        "parameters.prm, summary.json and log.txt (the screen "
+                        "output); created if needed. The files of an earlier "
+                        "psmpm run in it are removed first; a second run "
+                        "into a directory in use (psmpm.lock) is refused.");
       prm.enter_subsection("Output");
+      prm.declare_entry("Time interval",
+                        "0",
+                        Patterns::Double(0),
+                        "Also write VTU output whenever the simulated time "
+                        "passes a multiple of this [s] (0: off); with "
+                        "Output/Interval (steps), output is written when "
+                        "either is due.");
+      prm.declare_entry("Progress interval",
+                        "2",
+                        Patterns::Double(0),
+                        "Seconds of wall time between progress lines (step, "
+                        "simulated time, percent, wall time, ETA) on the "
+                        "screen; 0: none.");
       prm.declare_entry("Test output",
                         "false",
                         Patterns::Bool(),
@@ -243,6 +377,7 @@ end
       prm.leave_subsection();
       Simulator::Simulator<2>::declare_parameters(prm);
       Solver::L2Projection::declare_parameters(prm);
+      RunLimits::declare_parameters(prm);
     }
 
     int
@@ -258,7 +393,9 @@ end
       std::unique_ptr<Simulator::SimulatorBase> solver;
       Mesh::MeshGenerator<2>                    mesh;
       Solver::L2Projection                      projection;
-      std::string                               problem, basis;
+      RunLimits                                 limits;
+      std::string                               problem, basis, dir;
+      bool                                      test_output = false;
       std::string                               where = "the command line";
       try
         {
@@ -267,6 +404,12 @@ end
             {
               if (root)
                 std::cout << usage;
+              return success;
+            }
+          if (cl.version)
+            {
+              if (root)
+                std::cout << "psmpm " << version() << "\n";
               return success;
             }
           if (cl.print_parameters)
@@ -289,15 +432,44 @@ end
           for (const auto &o : cl.overrides)
             apply_override(prm, o);
           resolve_mesh_file(prm, cl.prm_file);
+          limits.parse_parameters(prm);
+          dir = prm.get("Output directory");
+          OutputDirectory::check_name(dir);
+          prm.enter_subsection("Output");
+          test_output                    = prm.get_bool("Test output");
+          const double time_interval     = prm.get_double("Time interval");
+          const double progress_interval = prm.get_double("Progress interval");
+          prm.leave_subsection();
           problem = prm.get("Problem");
           if (problem == "mpm")
             {
               prm.enter_subsection("Geometry");
               const unsigned int dimension = prm.get_integer("Dimension");
               prm.leave_subsection();
+              limits.check_entries(prm);
+              check_function_constants(prm);
               solver = Simulator::create_simulator(dimension, comm);
-              solver->parse_parameters(prm);
-              solver->setup();
+              {
+                // deal.II's FunctionParser prints the muParser error to
+                // std::cerr before it throws; psmpm's message says it.
+                std::ostringstream parser_noise;
+                struct Restore
+                {
+                  std::streambuf *old;
+                  ~Restore()
+                  {
+                    std::cerr.rdbuf(old);
+                  }
+                } restore{std::cerr.rdbuf(parser_noise.rdbuf())};
+                solver->parse_parameters(prm);
+                limits.check_scene(prm);
+                solver->setup();
+              }
+              solver->check_initial_state();
+              solver->quiet                = test_output;
+              solver->output_time_interval = time_interval;
+              solver->progress_interval    = progress_interval;
+              limits.check_run(solver->estimate_size());
             }
           else
             {
@@ -330,26 +502,72 @@ end
           return success;
         }
 
-      const std::string dir = prm.get("Output directory");
+      // The output directory: created, locked and cleared on rank 0; all
+      // ranks learn of a failure and stop with bad_input.
+      OutputDirectory output;
       try
         {
+          output.open(dir, comm);
+        }
+      catch (const std::exception &e)
+        {
           if (root)
-            {
-              std::filesystem::create_directories(dir);
-              std::ofstream out(dir + "/parameters.prm");
-              prm.print_parameters(out, ParameterHandler::PRM);
-            }
-          MPI_Barrier(comm);
-          prm.enter_subsection("Output");
-          const bool test_output = prm.get_bool("Test output");
-          prm.leave_subsection();
+            std::cerr << "psmpm: error in " << where << ": " << message_of(e)
+                      << "\n";
+          return bad_input;
+        }
+      LogFile                      log_file(dir + "/log.txt", root);
+      Postprocess::Summary         summary;
+      std::unique_ptr<StopRequest> stop;
+      const std::string            parameter_file =
+        cl.prm_file.empty() ? "(default scene)" : cl.prm_file;
+      const auto finish_summary = [&]() {
+        summary.set("wall_time_s", wall.wall_time());
+        summary.set("parameter_file", parameter_file);
+        summary.set("version", version());
+      };
+      try
+        {
+          if (root && !test_output)
+            std::cout
+              << "psmpm " << version() << ": " << where << ", output in "
+              << std::filesystem::absolute(dir).lexically_normal().string()
+              << " (screen output also in log.txt)" << std::endl;
           if (solver)
-            solver->quiet = test_output;
-          Postprocess::Summary summary;
-          auto                 status = Simulator::Status::completed;
+            {
+              // Collective: every rank computes it.
+              const auto size = solver->estimate_size();
+              if (root && !test_output)
+                std::cout << "psmpm: about " << size.steps << " steps, "
+                          << size.n_outputs << " outputs, "
+                          << std::max(1.,
+                                      std::round(size.output_bytes / 1048576.))
+                          << " MiB of output (estimated)" << std::endl;
+            }
+          std::string error;
+          if (root)
+            try
+              {
+                write_atomically(dir + "/parameters.prm",
+                                 [&](std::ostream &out) {
+                                   prm.print_parameters(out,
+                                                        ParameterHandler::PRM);
+                                 });
+              }
+            catch (const ExcWriteFailed &e)
+              {
+                error = e.what();
+              }
+          error = Utilities::MPI::broadcast(comm, error, 0);
+          if (!error.empty())
+            throw ExcWriteFailed(error);
+
+          auto status = Simulator::Status::completed;
           if (problem == "mpm")
             {
+              stop   = std::make_unique<StopRequest>();
               status = solver->run(dir);
+              stop.reset();
               solver->fill_summary(summary);
             }
           else
@@ -357,19 +575,14 @@ end
               projection.run(mesh, basis, dir, summary, comm);
               summary.set("status", "completed");
             }
-          summary.set("wall_time_s", wall.wall_time());
-          summary.set("parameter_file",
-                      cl.prm_file.empty() ? "(default scene)" : cl.prm_file);
+          finish_summary();
           if (root)
             {
               summary.write(dir + "/summary.json");
               if (test_output)
                 {
-                  std::cout
-                    << "status = "
-                    << (status == Simulator::Status::completed ? "completed" :
-                                                                 "unstable")
-                    << "\n";
+                  std::cout << "status = " << Simulator::status_name(status)
+                            << "\n";
                   print_test_output(summary, std::cout);
                 }
               else
@@ -377,7 +590,32 @@ end
             }
           if (status == Simulator::Status::completed)
             return success;
+          if (status == Simulator::Status::interrupted)
+            return interrupted + solver->stop_signal;
           return Simulator::failure_info(solver->get_failure()).exit_code;
+        }
+      catch (const ExcWriteFailed &e)
+        {
+          // The disk is full or the directory went away: say which file,
+          // and leave a summary if one can still be written.
+          if (root)
+            {
+              std::cerr << "psmpm: error: " << e.what() << "\n";
+              try
+                {
+                  Postprocess::Summary failed;
+                  failed.set("status", "failed");
+                  failed.set("reason", e.what());
+                  failed.set("wall_time_s", wall.wall_time());
+                  failed.set("parameter_file", parameter_file);
+                  failed.set("version", version());
+                  failed.write(dir + "/summary.json");
+                }
+              catch (const std::exception &)
+                {
+                }
+            }
+          return write_failed;
         }
       catch (const std::exception &e)
         {
@@ -390,6 +628,10 @@ end
     int
     run(int argc, char **argv, MPI_Comm comm)
     {
+      // A closed pipe or terminal (psmpm | head) must not kill a run in
+      // the middle of writing: the screen output is lost, log.txt and
+      // the output files are not.
+      std::signal(SIGPIPE, SIG_IGN);
       return run(std::vector<std::string>(argv + 1, argv + argc), comm);
     }
   } // namespace App

@@ -10,6 +10,7 @@
 #include <psmpm/mesh/triangle_geometry.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace psmpm
@@ -313,7 +314,30 @@ namespace psmpm
                   ExcMessage("Mesh/File = " + filename +
                              ": cannot open the mesh file."));
 
-      // Physical names: "$PhysicalNames / n / dim tag \"name\"".
+      // The format line: psmpm reads ASCII files only.
+      {
+        std::string line;
+        std::getline(in, line);
+        if (line.rfind("$MeshFormat", 0) == 0)
+          {
+            std::string version;
+            int         file_type = 0;
+            in >> version >> file_type;
+            AssertThrow(file_type == 0,
+                        ExcMessage("Mesh/File = " + filename +
+                                   ": a binary Gmsh file (format " + version +
+                                   "); psmpm reads ASCII .msh files only "
+                                   "(save it again without -bin, e.g. "
+                                   "gmsh in.msh -save -format msh22 -o "
+                                   "out.msh)."));
+          }
+      }
+      in.clear();
+      in.seekg(0);
+
+      // Physical names: "$PhysicalNames / n / dim tag \"name\"". A name
+      // is one boundary: defined once, with a tag other than 0 (deal.II
+      // gives every edge without a physical tag boundary id 0).
       std::map<std::string, types::boundary_id> physical_names;
       {
         std::string line;
@@ -330,7 +354,25 @@ namespace psmpm
                   std::getline(in, rest);
                   const auto a = rest.find('"'), b = rest.rfind('"');
                   if (entity_dim == 1 && a != std::string::npos && b > a)
-                    physical_names[rest.substr(a + 1, b - a - 1)] = tag;
+                    {
+                      const std::string name = rest.substr(a + 1, b - a - 1);
+                      AssertThrow(physical_names.count(name) == 0,
+                                  ExcMessage(
+                                    "Mesh/File = " + filename +
+                                    ": the physical name \"" + name +
+                                    "\" is defined twice (tags " +
+                                    std::to_string(physical_names[name]) +
+                                    " and " + std::to_string(tag) + ")."));
+                      AssertThrow(tag > 0,
+                                  ExcMessage(
+                                    "Mesh/File = " + filename +
+                                    ": the physical name \"" + name +
+                                    "\" has tag " + std::to_string(tag) +
+                                    "; boundary tags must be positive (0 is "
+                                    "the boundary of edges without a "
+                                    "physical group)."));
+                      physical_names[name] = tag;
+                    }
                 }
               break;
             }
@@ -366,6 +408,48 @@ namespace psmpm
                                  std::to_string(cell->active_cell_index()) +
                                  " is inverted (clockwise vertices)."));
         }
+
+      // Boundary edges: every named boundary has some, and no two
+      // boundary edges leave a vertex in the same direction (that is a
+      // hanging node: a vertex inside an edge of the neighbouring cell,
+      // whose edges then all count as boundary).
+      std::map<types::boundary_id, unsigned int>        edges_of;
+      std::map<unsigned int, std::vector<Tensor<1, 2>>> directions;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto face = cell->face(f);
+              ++edges_of[face->boundary_id()];
+              for (unsigned int v = 0; v < 2; ++v)
+                {
+                  const Tensor<1, 2> d = face->vertex(1 - v) - face->vertex(v);
+                  auto              &list = directions[face->vertex_index(v)];
+                  for (const auto &e : list)
+                    {
+                      const double cross = e[0] * d[1] - e[1] * d[0];
+                      AssertThrow(
+                        !(e * d > 0 &&
+                          std::abs(cross) <= 1e-10 * e.norm() * d.norm()),
+                        ExcMessage(
+                          "Mesh/File = " + filename +
+                          ": the mesh is not conforming at the vertex (" +
+                          std::to_string(face->vertex(v)[0]) + ", " +
+                          std::to_string(face->vertex(v)[1]) +
+                          "): two edges leave it in the same direction (a "
+                          "hanging node: a vertex inside the edge of a "
+                          "neighbouring triangle). psmpm needs a conforming "
+                          "mesh."));
+                    }
+                  list.push_back(d);
+                }
+            }
+      for (const auto &name : physical_names)
+        AssertThrow(edges_of.count(name.second) > 0,
+                    ExcMessage("Mesh/File = " + filename + ": the boundary \"" +
+                               name.first + "\" (tag " +
+                               std::to_string(name.second) +
+                               ") has no edges on the boundary of the mesh."));
       return physical_names;
     }
 

@@ -4,9 +4,11 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/checked_file.h>
 #include <psmpm/postprocess/output_writer.h>
 
 #include <array>
+#include <cstdio>
 #include <fstream>
 #include <tuple>
 
@@ -67,9 +69,30 @@ namespace psmpm
         DataOutBase::VtkFlags flags;
         flags.compression_level = DataOutBase::VtkFlags::best_speed;
         {
-          std::ofstream out(directory + "/" + piece_name(base, step, rank));
-          AssertThrow(out, ExcMessage("psmpm: cannot write into " + directory));
-          DataOutBase::write_vtu(patches, names, ranges, flags, out);
+          const std::string file =
+            directory + "/" + piece_name(base, step, rank);
+          // A piece that cannot be written whole is removed.
+          std::ofstream out(file);
+          try
+            {
+              check_written(out, file);
+              try
+                {
+                  DataOutBase::write_vtu(patches, names, ranges, flags, out);
+                }
+              catch (const ExceptionBase &)
+                {
+                  check_written(out, file); // deal.II's ExcIO: say why
+                  throw;
+                }
+              check_written(out, file);
+            }
+          catch (const ExcWriteFailed &)
+            {
+              out.close();
+              std::remove(file.c_str());
+              throw;
+            }
         }
         const std::string record =
           base + "-" + Utilities::int_to_string(step, 5) + ".pvtu";
@@ -78,8 +101,9 @@ namespace psmpm
             std::vector<std::string> pieces;
             for (unsigned int r = 0; r < size; ++r)
               pieces.push_back(piece_name(base, step, r));
-            std::ofstream out(directory + "/" + record);
-            DataOutBase::write_pvtu_record(out, pieces, names, ranges, flags);
+            write_atomically(directory + "/" + record, [&](std::ostream &out) {
+              DataOutBase::write_pvtu_record(out, pieces, names, ranges, flags);
+            });
           }
         return record;
       }
@@ -252,8 +276,9 @@ namespace psmpm
     {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
-      std::ofstream out(directory + "/" + name + ".pvd");
-      DataOutBase::write_pvd_record(out, records);
+      write_atomically(directory + "/" + name + ".pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, records);
+      });
     }
 
 

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/base/checked_file.h>
 #include <psmpm/postprocess/oscillation.h>
 #include <psmpm/postprocess/tracked_particle.h>
 
@@ -78,15 +79,18 @@ namespace psmpm
     {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
-      std::ofstream out(directory + "/tracked_particle.txt");
-      out
-        << "# particle starting nearest to (" << point << "), id " << id
-        << ", component " << axis << "\n"
-        << "# time displacement velocity reference_displacement reference_velocity\n";
-      out.precision(10);
-      for (const auto &r : history)
-        out << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3] << ' ' << r[4]
-            << '\n';
+      write_atomically(
+        directory + "/tracked_particle.txt",
+        [&](std::ostream &out) {
+          out
+            << "# particle starting nearest to (" << point << "), id " << id
+            << ", component " << axis << "\n"
+            << "# time displacement velocity reference_displacement reference_velocity\n";
+          out.precision(10);
+          for (const auto &r : history)
+            out << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3] << ' '
+                << r[4] << '\n';
+        });
     }
 
     template <int dim>

@@ -5,9 +5,14 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/checked_file.h>
 #include <psmpm/base/format.h>
+#include <psmpm/base/stop_request.h>
+#include <psmpm/postprocess/progress.h>
 #include <psmpm/simulator/simulator.h>
 
+#include <cmath>
+#include <csignal>
 #include <fstream>
 #include <map>
 
@@ -458,10 +463,13 @@ namespace psmpm
               statistics.set_scientific(c, true);
               statistics.set_precision(c, 8);
             }
-          std::ofstream out(output_directory + "/statistics.txt");
-          statistics.write_text(
-            out,
-            TableHandler::table_with_separate_column_description);
+          write_atomically(
+            output_directory + "/statistics.txt",
+            [this](std::ostream &out) {
+              statistics.write_text(
+                out,
+                TableHandler::table_with_separate_column_description);
+            });
         }
       if (tracked)
         tracked->write(output_directory, comm);
@@ -500,8 +508,24 @@ namespace psmpm
                                  Tensor<1, dim>());
       state.grid_acceleration = state.grid_velocity;
       state.dt                = 0;
+      // Every rank learns of a failed write (the first message wins) and
+      // the run ends with ExcWriteFailed on all of them.
+      const auto checked_write_output = [this]() {
+        std::string error;
+        try
+          {
+            write_output();
+          }
+        catch (const ExcWriteFailed &e)
+          {
+            error = e.what();
+          }
+        for (const auto &e : Utilities::MPI::all_gather(comm, error))
+          if (!e.empty())
+            throw ExcWriteFailed(e);
+      };
       postprocess(0);
-      write_output();
+      checked_write_output();
 
       if (!time_step_control.warning().empty())
         pcout << "psmpm: warning: " << time_step_control.warning() << std::endl;
@@ -511,18 +535,39 @@ namespace psmpm
             << " particles, dt = " << time_step_control.get_time_step()
             << ", end time = " << time_step_control.get_end_time() << std::endl;
 
-      // The algorithm: step, measure, check, write.
+      // The algorithm: step, measure, check, write. A stop request
+      // (SIGINT, SIGTERM) ends the loop after the step in which all ranks
+      // learn of it; output is written then, as after the last step.
+      Postprocess::Progress progress(std::cout,
+                                     !quiet && progress_interval > 0 &&
+                                       Utilities::MPI::this_mpi_process(comm) ==
+                                         0,
+                                     progress_interval);
+      unsigned int time_outputs = 0; // multiples of the time interval passed
       while (!time_step_control.finished(state.time) &&
              status == Status::completed)
         {
           do_time_step(next_time_step());
           ++state.step;
           postprocess(wall.wall_time());
-          const bool last = time_step_control.finished(state.time) ||
-                            status != Status::completed;
-          if (last ||
-              (output_interval > 0 && state.step % output_interval == 0))
-            write_output();
+          if (status == Status::completed &&
+              (stop_signal = StopRequest::agreed(comm)) != 0)
+            status = Status::interrupted;
+          bool due = time_step_control.finished(state.time) ||
+                     status != Status::completed ||
+                     (output_interval > 0 && state.step % output_interval == 0);
+          if (output_time_interval > 0)
+            {
+              const auto passed = static_cast<unsigned int>(
+                std::floor(state.time / output_time_interval * (1 + 1e-12)));
+              due          = due || passed > time_outputs;
+              time_outputs = std::max(time_outputs, passed);
+            }
+          if (due)
+            checked_write_output();
+          progress.update(state.step,
+                          state.time,
+                          time_step_control.get_end_time());
         }
       wall.stop();
       if (!quiet)
@@ -531,6 +576,10 @@ namespace psmpm
           if (status == Status::unstable)
             pcout << "psmpm: UNSTABLE at step " << failed_step << ": "
                   << monitor.reason() << std::endl;
+          if (status == Status::interrupted)
+            pcout << "psmpm: interrupted by signal " << stop_signal
+                  << " after step " << state.step << " (t = " << state.time
+                  << "); output written." << std::endl;
         }
       return status;
     }
@@ -539,8 +588,17 @@ namespace psmpm
     void
     Simulator<dim>::fill_summary(Postprocess::Summary &summary) const
     {
-      summary.set("status",
-                  status == Status::completed ? "completed" : "unstable");
+      summary.set("status", status_name(status));
+      if (status == Status::interrupted)
+        {
+          summary.set("reason",
+                      "stopped by signal " + std::to_string(stop_signal) +
+                        (stop_signal == SIGINT  ? " (SIGINT)" :
+                         stop_signal == SIGTERM ? " (SIGTERM)" :
+                         stop_signal == SIGUSR1 ? " (SIGUSR1)" :
+                                                  ""));
+          summary.set_integer("signal", stop_signal);
+        }
       if (status == Status::unstable)
         {
           summary.set("reason", monitor.reason());

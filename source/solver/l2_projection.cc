@@ -14,6 +14,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <psmpm/base/checked_file.h>
 #include <psmpm/basis/powell_sabin_refinement.h>
 #include <psmpm/basis/space.h>
 #include <psmpm/mesh/triangle_geometry.h>
@@ -81,7 +82,7 @@ namespace psmpm
         for (unsigned int i = 0; i < patches.size(); ++i)
           patches[i].patch_index = i;
         std::ofstream out(filename);
-        AssertThrow(out.good(), ExcMessage("Cannot write " + filename + "."));
+        check_written(out, filename);
         DataOutBase::write_vtu(
           patches,
           names,
@@ -92,6 +93,7 @@ namespace psmpm
             DataComponentInterpretation::DataComponentInterpretation>>(),
           DataOutBase::VtkFlags(),
           out);
+        check_written(out, filename);
       }
     } // namespace
 

@@ -27,6 +27,10 @@ namespace psmpm
       unstable_left_mesh = 5, ///< a particle left the mesh
       unstable_volume    = 6, ///< non-positive particle volume
       unstable_solver    = 7, ///< mass matrix solver did not converge
+      write_failed       = 8, ///< an output file could not be written
+      /// A run stopped by signal N (SIGINT, SIGTERM) after finishing its
+      /// step and writing its output ends with interrupted + N.
+      interrupted = 128,
     };
 
     /// The scene that runs when no parameter file is given: the small
@@ -40,9 +44,9 @@ namespace psmpm
     /**
      * Run psmpm with the command line @p args (without the program name):
      * `[scene.prm] [--set "Subsection/Entry=value"]... [--validate]
-     * [--print-parameters] [--help]`. Returns an ExitCode; messages go to
-     * std::cout / std::cerr on rank 0. Nothing is written unless the whole
-     * input is valid.
+     * [--print-parameters] [--version] [--help]`. Returns an ExitCode; messages
+     * go to std::cout / std::cerr on rank 0. Nothing is written unless the
+     * whole input is valid.
      */
     int
     run(const std::vector<std::string> &args, MPI_Comm comm);

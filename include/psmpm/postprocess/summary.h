@@ -36,7 +36,8 @@ namespace psmpm
       std::string
       to_json() const;
 
-      /// Write atomically (temporary file, then rename) to @p filename.
+      /// Write atomically (temporary file, then rename) to @p filename;
+      /// throws ExcWriteFailed naming the file.
       void
       write(const std::string &filename) const;
 

@@ -32,11 +32,32 @@ namespace psmpm
   {
     using namespace dealii;
 
-    /// How a run ended; unstable runs carry the reason.
+    /// How a run ended; unstable runs carry the reason, interrupted ones
+    /// the signal (SIGINT, SIGTERM; see StopRequest).
     enum class Status
     {
       completed,
-      unstable
+      unstable,
+      interrupted
+    };
+
+    /// "completed", "unstable" or "interrupted" (summary.json).
+    inline const char *
+    status_name(const Status s)
+    {
+      return s == Status::completed ? "completed" :
+             s == Status::unstable  ? "unstable" :
+                                      "interrupted";
+    }
+
+    /// What a run will cost, estimated before it starts (RunLimits).
+    struct RunSize
+    {
+      double steps        = 0; ///< time steps to the end time
+      double n_cells      = 0;
+      double n_particles  = 0; ///< over all ranks
+      double n_outputs    = 0; ///< VTU outputs written
+      double output_bytes = 0; ///< all VTU outputs and statistics
     };
 
     /// What the application needs of a run, whatever its dimension.
@@ -54,9 +75,23 @@ namespace psmpm
       fill_summary(Postprocess::Summary &summary) const = 0;
       virtual Failure
       get_failure() const = 0;
+      /// Estimated steps and output volume (after setup(); collective).
+      virtual RunSize
+      estimate_size() const = 0;
+      /// Throw ExcMessage naming the entry if the initial state (after
+      /// setup()) is not finite, e.g. Initial conditions/Velocity = 1/0.
+      virtual void
+      check_initial_state() const = 0;
 
       /// Quiet mode: no screen output (tests).
       bool quiet = false;
+      /// Output/Time interval: also write output whenever the simulated
+      /// time passes a multiple of this (0: only Output/Interval).
+      double output_time_interval = 0;
+      /// Seconds of wall time between progress lines (0: none).
+      double progress_interval = 0;
+      /// The signal that ended an interrupted run (0 otherwise).
+      int stop_signal = 0;
     };
 
     /**
@@ -86,6 +121,9 @@ namespace psmpm
       setup() override;
 
       /// Time loop; writes output into @p output_directory (which exists).
+      /// Stops after the step in which any rank received a StopRequest
+      /// signal (Status::interrupted); throws ExcWriteFailed on every rank
+      /// if any rank could not write a file.
       Status
       run(const std::string &output_directory) override;
 
@@ -106,6 +144,11 @@ namespace psmpm
       compute_errors() const;
       Postprocess::Energies<dim>
       compute_energies() const;
+
+      RunSize
+      estimate_size() const override;
+      void
+      check_initial_state() const override;
 
       Failure
       get_failure() const override

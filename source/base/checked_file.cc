@@ -1,0 +1,87 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/base/checked_file.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+namespace psmpm
+{
+  namespace
+  {
+    std::string
+    reason(const int error)
+    {
+      return error != 0 ? std::strerror(error) : "write error";
+    }
+  } // namespace
+
+  void
+  check_written(std::ostream &out, const std::string &file)
+  {
+    // A stream that failed earlier keeps the errno of its failed write.
+    if (!out.good())
+      throw ExcWriteFailed("cannot write " + file + ": " + reason(errno));
+    errno = 0;
+    out.flush();
+    if (!out.good())
+      throw ExcWriteFailed("cannot write " + file + ": " + reason(errno));
+  }
+
+  void
+  write_atomically(const std::string                         &file,
+                   const std::function<void(std::ostream &)> &write)
+  {
+    const std::string tmp = file + ".tmp";
+    {
+      errno = 0;
+      std::ofstream out(tmp, std::ios::binary);
+      if (!out.is_open())
+        throw ExcWriteFailed("cannot write " + file + ": cannot create " + tmp +
+                             " (" + reason(errno) + ")");
+      try
+        {
+          try
+            {
+              write(out);
+            }
+          catch (const ExcWriteFailed &)
+            {
+              throw;
+            }
+          catch (...)
+            {
+              // A writer that checks its stream (deal.II's ExcIO) failed:
+              // the stream says why.
+              check_written(out, file);
+              throw;
+            }
+          check_written(out, file);
+        }
+      catch (...)
+        {
+          out.close();
+          std::remove(tmp.c_str());
+          throw;
+        }
+      errno = 0;
+      out.close();
+      if (out.fail())
+        {
+          const int error = errno;
+          std::remove(tmp.c_str());
+          throw ExcWriteFailed("cannot write " + file + ": " + reason(error));
+        }
+    }
+    if (std::rename(tmp.c_str(), file.c_str()) != 0)
+      {
+        const int error = errno;
+        std::remove(tmp.c_str());
+        throw ExcWriteFailed("cannot write " + file + ": rename from " + tmp +
+                             " failed (" + reason(error) + ")");
+      }
+  }
+} // namespace psmpm

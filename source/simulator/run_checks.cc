@@ -1,0 +1,85 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// Checks of a run that has been set up but not started: the size of the
+// work ahead (for App::RunLimits) and a finite initial state.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
+#include <psmpm/base/format.h>
+#include <psmpm/simulator/simulator.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    template <int dim>
+    RunSize
+    Simulator<dim>::estimate_size() const
+    {
+      RunSize      size;
+      const double dt  = time_step_control.get_time_step();
+      const double end = time_step_control.get_end_time();
+      size.steps       = dt > 0 ? std::ceil(end / dt) : 0;
+      size.n_cells     = state.triangulation.n_active_cells();
+      size.n_particles =
+        Utilities::MPI::sum(double(state.particles.size()), comm);
+      size.n_outputs = 2;
+      if (output_interval > 0)
+        size.n_outputs += std::floor(size.steps / output_interval);
+      if (output_time_interval > 0)
+        size.n_outputs += std::floor(end / output_time_interval);
+      // Compressed VTU: about 100 bytes per particle, and per sampling
+      // point of the grid (a cell of s x s sub-triangles has about s^2
+      // points of its own); a statistics row of about 400 bytes per step.
+      const double s =
+        subdivisions > 0 ? subdivisions : (state.space->degree() == 1 ? 1 : 4);
+      const double per_output =
+        100. * size.n_particles + 100. * size.n_cells * std::max(1., s * s);
+      size.output_bytes = size.n_outputs * per_output + 400. * size.steps;
+      return size;
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::check_initial_state() const
+    {
+      const auto        &particles = state.particles;
+      long long          bad       = -1;
+      const unsigned int n         = particles.size();
+      for (unsigned int i = 0; i < n && bad < 0; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!std::isfinite(particles.velocity[i][d]))
+            bad = i;
+      std::string where;
+      if (bad >= 0)
+        {
+          where = "(" + prm_value(particles.position[bad][0]);
+          for (unsigned int d = 1; d < dim; ++d)
+            where += ", " + prm_value(particles.position[bad][d]);
+          where += ") gives " + prm_value(particles.velocity[bad][0]);
+          for (unsigned int d = 1; d < dim; ++d)
+            where += "; " + prm_value(particles.velocity[bad][d]);
+        }
+      // The first rank with a bad particle speaks for all.
+      const auto all = Utilities::MPI::all_gather(comm, where);
+      for (const auto &w : all)
+        AssertThrow(w.empty(),
+                    ExcMessage(
+                      "Initial conditions/Velocity = '" + velocity_expression +
+                      "' (Function constants = '" + velocity_constants +
+                      "') is not finite: the particle at " + w + "."));
+    }
+
+    template RunSize
+    Simulator<1>::estimate_size() const;
+    template RunSize
+    Simulator<2>::estimate_size() const;
+    template void
+    Simulator<1>::check_initial_state() const;
+    template void
+    Simulator<2>::check_initial_state() const;
+  } // namespace Simulator
+} // namespace psmpm
