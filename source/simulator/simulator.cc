@@ -136,9 +136,16 @@ namespace psmpm
                     std::to_string(dim) + "D (known: " +
                     Basis::SpaceRegistry<dim>::instance().names() + ")."));
 
+      // "automatic" takes the space's measured defaults.
+      const auto space = Basis::create_space<dim>(basis_name);
+      if (grid_parameters.type == "automatic")
+        grid_parameters.type = space->default_mass_matrix();
       prm.enter_subsection("Transfer");
+      transfer_name = prm.get("Scheme");
+      if (transfer_name == "automatic")
+        transfer_name = space->default_transfer(grid_parameters.type);
       transfer =
-        TransferSchemeRegistry<dim>::instance().create(prm.get("Scheme"),
+        TransferSchemeRegistry<dim>::instance().create(transfer_name,
                                                        "Transfer/Scheme",
                                                        prm);
       prm.leave_subsection();
@@ -621,6 +628,7 @@ namespace psmpm
       summary.set("time_step_max", time_step_control.get_max_time_step());
       summary.set("basis", state.space->name());
       summary.set("mass_matrix", grid_parameters.type);
+      summary.set("transfer", transfer_name);
       summary.set("material", state.material->name());
       rotation_statistics.fill_summary(summary);
       if (reference)

@@ -14,10 +14,12 @@ namespace psmpm
       prm.enter_subsection("Transfer");
       prm.declare_entry(
         "Scheme",
-        "musl",
+        "automatic",
         Patterns::Selection(
-          TransferSchemeRegistry<dim>::instance().selection()),
-        TransferSchemeRegistry<dim>::instance().documentation());
+          "automatic|" + TransferSchemeRegistry<dim>::instance().selection()),
+        "automatic: the basis' measured default (apic for powell-sabin with "
+        "lumped mass, musl otherwise; doc/transfers.md); " +
+          TransferSchemeRegistry<dim>::instance().documentation());
       TransferSchemeRegistry<dim>::instance().declare_parameters(prm);
       prm.leave_subsection();
     }

@@ -24,11 +24,14 @@ namespace psmpm
     GridSystem<dim>::Parameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Mass matrix");
-      prm.declare_entry("Type",
-                        "partially lumped",
-                        Patterns::Selection(
-                          MassStrategyRegistry<dim>::instance().selection()),
-                        MassStrategyRegistry<dim>::instance().documentation());
+      prm.declare_entry(
+        "Type",
+        "automatic",
+        Patterns::Selection("automatic|" +
+                            MassStrategyRegistry<dim>::instance().selection()),
+        "automatic: the basis' measured default (lumped for powell-sabin, "
+        "partially lumped for linear; doc/transfers.md); " +
+          MassStrategyRegistry<dim>::instance().documentation());
       prm.declare_entry("Solver tolerance",
                         "1e-12",
                         Patterns::Double(0),
@@ -224,7 +227,7 @@ namespace psmpm
         {
           // Every DoF of the cells around a vertex with every other: the
           // couplings of patch blocks over two cells that share a vertex.
-          std::vector<types::global_dof_index> dofs(dofs_per_cell);
+          std::vector<types::global_dof_index>              dofs(dofs_per_cell);
           std::vector<std::vector<types::global_dof_index>> cell_dofs(n_cells);
           for (const auto &cell : dof_handler.active_cell_iterators())
             {

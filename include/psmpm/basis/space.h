@@ -152,6 +152,25 @@ namespace psmpm
        */
       virtual double
       stability_factor(const bool lumped) const = 0;
+
+      /**
+       * What `Mass matrix/Type = automatic` and `Transfer/Scheme =
+       * automatic` select for this space: the combination that the suite
+       * of doc/transfers.md measured as stable and accurate on free,
+       * emptying and filling bodies (the transfer for the mass matrix in
+       * use). P1: partially lumped mass with MUSL.
+       */
+      virtual std::string
+      default_mass_matrix() const
+      {
+        return "partially lumped";
+      }
+      virtual std::string
+      default_transfer(const std::string &mass_matrix) const
+      {
+        (void)mass_matrix;
+        return "musl";
+      }
     };
 
     template <int dim>

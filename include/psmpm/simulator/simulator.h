@@ -207,6 +207,7 @@ namespace psmpm
       Particles::ParticleGenerator<dim>            particle_generator;
       typename Solver::GridSystem<dim>::Parameters grid_parameters;
       std::string                                  basis_name;
+      std::string                                  transfer_name;
       std::string                                  velocity_expression;
       std::string                                  velocity_constants;
       std::array<std::vector<std::string>, dim>    fixed_names;
