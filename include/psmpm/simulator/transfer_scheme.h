@@ -41,6 +41,24 @@ namespace psmpm
       step(State<dim>       &state,
            StabilityMonitor &monitor,
            TimerOutput      &timer) = 0;
+
+    protected:
+      /// state.grid->solve(@p solution), a CG failure reported to the
+      /// monitor (returns false) instead of thrown.
+      static bool
+      solve(State<dim>                  &state,
+            std::vector<Tensor<1, dim>> &solution,
+            StabilityMonitor            &monitor,
+            TimerOutput                 &timer);
+
+      /// The material update of all particles from their increments
+      /// dt grad v, then volumes and densities; a non-positive volume is
+      /// reported. @p volume_ratio is scratch of any size.
+      static void
+      update_material(State<dim>                        &state,
+                      const std::vector<Tensor<2, dim>> &increments,
+                      std::vector<double>               &volume_ratio,
+                      StabilityMonitor                  &monitor);
     };
 
     template <int dim>

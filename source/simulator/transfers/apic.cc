@@ -100,10 +100,10 @@ namespace psmpm
             mass_to_grid(state);
             momentum_to_grid(state);
           }
-          if (!solve(state, state.grid_velocity, monitor, timer))
+          if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           forces_to_grid(state, timer);
-          if (!solve(state, state.grid_acceleration, monitor, timer))
+          if (!this->solve(state, state.grid_acceleration, monitor, timer))
             return false;
           for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
             state.grid_velocity[l] += state.dt * state.grid_acceleration[l];
@@ -112,36 +112,13 @@ namespace psmpm
             TimerOutput::Scope t(timer, "particle to grid");
             momentum_to_grid(state);
           }
-          if (!solve(state, state.grid_velocity, monitor, timer))
+          if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           update_particle_state(state, monitor, timer);
           return true;
         }
 
       private:
-        static bool
-        solve(State<dim>                  &state,
-              std::vector<Tensor<1, dim>> &solution,
-              StabilityMonitor            &monitor,
-              TimerOutput                 &timer)
-        {
-          try
-            {
-              TimerOutput::Scope t(timer, "solve");
-              state.grid->solve(solution);
-            }
-          catch (const SolverControl::NoConvergence &e)
-            {
-              monitor.report(Failure::solver,
-                             "mass matrix solver did not converge (" +
-                               std::to_string(e.last_step) +
-                               " iterations, residual " +
-                               prm_value(e.last_residual) + ")");
-              return false;
-            }
-          return true;
-        }
-
         /// Control points in local relevant numbering (they depend only on
         /// the mesh and the DoF numbering) and the mode.
         void
@@ -369,7 +346,6 @@ namespace psmpm
           const double        dt        = state.dt;
           const bool gradient = mode == AffineMatrix::velocity_gradient;
           increments.resize(particles.size());
-          volume_ratio.resize(particles.size());
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               const unsigned int    base = particles.cell[p] * n;
@@ -385,20 +361,7 @@ namespace psmpm
               particles.displacement[p] += du;
               particles.position[p] += du;
             }
-          state.material->update(particles.size(),
-                                 increments.data(),
-                                 particles.stress.data(),
-                                 particles.state.data(),
-                                 volume_ratio.data());
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              particles.volume[p] *= volume_ratio[p];
-              particles.density[p] /= volume_ratio[p];
-              if (!(particles.volume[p] > 0))
-                monitor.report(Failure::non_positive_volume,
-                               "non-positive particle volume (particle " +
-                                 std::to_string(particles.id[p]) + ")");
-            }
+          this->update_material(state, increments, volume_ratio, monitor);
         }
 
         std::string             matrix_choice;

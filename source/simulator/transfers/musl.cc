@@ -30,42 +30,16 @@ namespace psmpm
              TimerOutput      &timer) override
         {
           particles_to_grid(state, timer);
-          try
-            {
-              TimerOutput::Scope t(timer, "solve");
-              state.grid->solve(state.grid_acceleration);
-            }
-          catch (const SolverControl::NoConvergence &e)
-            {
-              report(monitor, e);
-              return false;
-            }
+          if (!this->solve(state, state.grid_acceleration, monitor, timer))
+            return false;
           update_particle_velocities(state, timer);
-          try
-            {
-              TimerOutput::Scope t(timer, "solve");
-              state.grid->solve(state.grid_velocity);
-            }
-          catch (const SolverControl::NoConvergence &e)
-            {
-              report(monitor, e);
-              return false;
-            }
+          if (!this->solve(state, state.grid_velocity, monitor, timer))
+            return false;
           update_particle_state(state, monitor, timer);
           return true;
         }
 
       private:
-        static void
-        report(StabilityMonitor &monitor, const SolverControl::NoConvergence &e)
-        {
-          monitor.report(Failure::solver,
-                         "mass matrix solver did not converge (" +
-                           std::to_string(e.last_step) +
-                           " iterations, residual " +
-                           prm_value(e.last_residual) + ")");
-        }
-
         static void
         particles_to_grid(State<dim> &state, TimerOutput &timer)
         {
@@ -141,7 +115,6 @@ namespace psmpm
           const unsigned int *dofs      = state.grid->cell_dofs().data();
           const double        dt        = state.dt;
           increments.resize(particles.size());
-          volume_ratio.resize(particles.size());
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               const unsigned int    base = particles.cell[p] * n;
@@ -161,20 +134,7 @@ namespace psmpm
               particles.displacement[p] += du;
               particles.position[p] += du;
             }
-          state.material->update(particles.size(),
-                                 increments.data(),
-                                 particles.stress.data(),
-                                 particles.state.data(),
-                                 volume_ratio.data());
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              particles.volume[p] *= volume_ratio[p];
-              particles.density[p] /= volume_ratio[p];
-              if (!(particles.volume[p] > 0))
-                monitor.report(Failure::non_positive_volume,
-                               "non-positive particle volume (particle " +
-                                 std::to_string(particles.id[p]) + ")");
-            }
+          this->update_material(state, increments, volume_ratio, monitor);
         }
 
         // Per-step scratch, kept to avoid reallocation.
