@@ -11,6 +11,7 @@
 
 #include "tests.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,25 @@ configure(psmpm::Simulator::Simulator<2> &solver,
   solver.quiet = true;
   solver.parse_parameters(prm);
   solver.setup();
+}
+
+/// A solver set up from the scene file prm/@p scene of the repository with
+/// the given overrides ("Subsection/Entry=value"), quiet.
+inline std::unique_ptr<psmpm::Simulator::Simulator<2>>
+make_scene_solver(const std::string              &scene,
+                  const std::vector<std::string> &overrides)
+{
+  ParameterHandler prm;
+  psmpm::App::declare_parameters(prm);
+  prm.parse_input(std::string(PSMPM_SOURCE_DIR) + "/prm/" + scene);
+  for (const auto &o : overrides)
+    psmpm::App::apply_override(prm, o);
+  auto solver =
+    std::make_unique<psmpm::Simulator::Simulator<2>>(MPI_COMM_WORLD);
+  solver->quiet = true;
+  solver->parse_parameters(prm);
+  solver->setup();
+  return solver;
 }
 
 /// Largest violation of "the particle lies in its triangle" and whether

@@ -158,7 +158,12 @@ namespace psmpm
        * automatic` select for this space: the combination that the suite
        * of doc/transfers.md measured as stable and accurate on free,
        * emptying and filling bodies (the transfer for the mass matrix in
-       * use). P1: partially lumped mass with MUSL.
+       * use). P1: partially lumped mass with MUSL. Measured alternatives
+       * (doc/transfers.md): lumped mass with APIC and the rotational affine
+       * matrix keeps the angular momentum of a free rotating body to 1e-4
+       * (MUSL loses 44 %) but its PIC velocity update damps every
+       * non-rotational motion (a vibrating bar's displacement error grows
+       * 40x); a FLIP blend is either damped as well or unstable.
        */
       virtual std::string
       default_mass_matrix() const

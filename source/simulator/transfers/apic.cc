@@ -16,6 +16,7 @@ namespace psmpm
       {
         control_points,
         velocity_gradient,
+        rotation,
         none
       };
 
@@ -55,6 +56,14 @@ namespace psmpm
        *    P1 needs it: its D_p is singular on edges and D_p^{-1} grows as
        *    1 / N_k, so B_p D_p^{-1} (= sum_i v_i grad N_i^T) carries the
        *    acceleration f_k / m_k of a function with little mass undamped.
+       *    Fed back through the next projection, the full gradient is
+       *    amplified step by step on P1 (its symmetric part: the strain
+       *    rate of element-wise noise);
+       *  - rotation: the skew part of that gradient (rotational PIC, RPIC
+       *    of Jiang et al. 2015): a rigid rotation is carried exactly and
+       *    angular momentum is kept, without the symmetric feedback. The
+       *    default for P1 (free block: angular momentum to 1e-4, where the
+       *    full gradient fails after 100 steps, doc/transfers.md).
        *
        * Stress and positions (MUSL's second projection, for the same
        * reason as MUSL): the particles' new affine fields are projected
@@ -72,20 +81,32 @@ namespace psmpm
             "Affine matrix",
             "automatic",
             Patterns::Selection(
-              "automatic|control points|velocity gradient|none"),
+              "automatic|control points|velocity gradient|rotation|none"),
             "How the apic scheme forms each particle's affine velocity "
             "matrix C_p from the grid: 'control points' = B_p D_p^{-1} over "
             "the space's control points (APIC proper, angular momentum "
             "conserving), 'velocity gradient' = the gradient of the "
-            "re-projected velocity (Taylor PIC), 'automatic' = control "
-            "points for quadratic spaces, velocity gradient for linear "
-            "ones (whose D_p is singular on element edges), 'none' = C_p = 0 "
+            "re-projected velocity (Taylor PIC), 'rotation' = the skew part "
+            "of that gradient (rotational PIC: carries rigid rotations and "
+            "angular momentum, not the strain rate), 'automatic' = control "
+            "points for quadratic spaces, rotation for linear ones (whose "
+            "D_p is singular on element edges and whose full gradient "
+            "feedback is unstable), 'none' = C_p = 0 "
             "(plain PIC with the same projections, for comparison).");
+          prm.declare_entry(
+            "FLIP fraction",
+            "0",
+            Patterns::Double(0, 1),
+            "Particle velocity update of the apic scheme: v_p = (1 - a) "
+            "sum_i N_i v_i^{n+1} + a (v_p + dt sum_i N_i a_i), a = this "
+            "fraction. 0 = PIC (APIC proper: the affine matrix carries what "
+            "the projection cannot).");
         }
 
         /// @p prm is inside subsection "Transfer".
         explicit APIC(ParameterHandler &prm)
           : matrix_choice(prm.get("Affine matrix"))
+          , flip_fraction(prm.get_double("FLIP fraction"))
         {
         }
 
@@ -129,6 +150,8 @@ namespace psmpm
           else if (matrix_choice == "control points" ||
                    (matrix_choice == "automatic" && state.space->degree() > 1))
             mode = AffineMatrix::control_points;
+          else if (matrix_choice == "rotation" || matrix_choice == "automatic")
+            mode = AffineMatrix::rotation;
           else
             mode = AffineMatrix::velocity_gradient;
           const auto &global = state.grid->relevant_global_indices();
@@ -324,7 +347,17 @@ namespace psmpm
                       D += phi[k] * symmetrize(outer_product(r, r));
                     }
                 }
-              particles.velocity[p] = v;
+              if (flip_fraction > 0)
+                {
+                  Tensor<1, dim> a;
+                  for (unsigned int k = 0; k < n; ++k)
+                    a += phi[k] * state.grid_acceleration[dofs[base + k]];
+                  particles.velocity[p] =
+                    (1 - flip_fraction) * v +
+                    flip_fraction * (particles.velocity[p] + state.dt * a);
+                }
+              else
+                particles.velocity[p] = v;
               if (fit)
                 particles.affine[p] = affine_matrix(B, D, particles.affine[p]);
               else if (mode == AffineMatrix::none)
@@ -345,6 +378,7 @@ namespace psmpm
           const unsigned int *dofs      = state.grid->cell_dofs().data();
           const double        dt        = state.dt;
           const bool gradient = mode == AffineMatrix::velocity_gradient;
+          const bool rotation = mode == AffineMatrix::rotation;
           increments.resize(particles.size());
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
@@ -356,6 +390,8 @@ namespace psmpm
                   outer_product(state.grid_velocity[dofs[base + k]], grad[k]);
               if (gradient)
                 particles.affine[p] = L;
+              else if (rotation)
+                particles.affine[p] = 0.5 * (L - transpose(L));
               increments[p]           = dt * L;
               const Tensor<1, dim> du = dt * particles.velocity[p];
               particles.displacement[p] += du;
@@ -365,7 +401,9 @@ namespace psmpm
         }
 
         std::string             matrix_choice;
-        AffineMatrix            mode = AffineMatrix::control_points;
+        double                  flip_fraction = 0;
+        AffineMatrix            mode          = AffineMatrix::control_points;
+        bool                    flip          = false; ///< FLIP velocity update
         std::vector<Point<dim>> control_points; ///< local relevant numbering
         // Per-step arrays, kept to avoid reallocation.
         std::vector<double>         particle_mass; ///< w_k per cell DoF
