@@ -292,7 +292,7 @@ def cost(exe, work):
                 pts.append((s['time_loop_s'], e))
                 print('| %g | %s | %d | %.3f | %.3e | %.2f | %.3f |' % (
                     end, scheme, ne, e,
-                    s.get('errors.displacement_L2', float('nan')),
+                    s.get('errors', {}).get('displacement_L2', float('nan')),
                     s['cpu_s'], s['time_loop_s']))
             pts = np.array(pts)
             ax[i].loglog(pts[:, 0], pts[:, 1], 'o-', label=scheme)
@@ -338,8 +338,8 @@ def two_d(exe, work):
             u, y = re.search(r'CPU ([\d.]+) ([\d.]+)', p.stderr).groups()
             print('| %s | %s | %s | %d | %s | %s | %.1f |' % (
                 name, scheme, s['status'], s['steps'],
-                '%.3e' % s['errors.displacement_L2']
-                if 'errors.displacement_L2' in s else '-',
+                '%.3e' % s['errors']['displacement_L2']
+                if 'errors' in s else '-',
                 s.get('reason', '').replace('|', '/')[:90],
                 float(u) + float(y)))
 
