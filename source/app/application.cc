@@ -92,8 +92,9 @@ end
         "  --help                this text\n"
         "Exit codes: 0 success, 1 internal error, 2 bad input; an unstable run\n"
         "  ends with 3 (non-finite values), 4 (energy growth), 5 (particle left\n"
-        "  the mesh), 6 (non-positive volume) or 7 (solver not converging);\n"
-        "  8: an output file could not be written; 128 + N: stopped by signal\n"
+        "  the mesh), 6 (non-positive volume), 7 (solver not converging) or 9\n"
+        "  (a cell of the moving otm grid inverted); 8: an output file could\n"
+        "  not be written; 128 + N: stopped by signal\n"
         "  N (SIGINT 130, SIGTERM 143, SIGUSR1 138: what mpirun forwards) after\n"
         "  finishing the step and writing the output (status \"interrupted\" in\n"
         "  summary.json).\n";

@@ -212,6 +212,7 @@ namespace psmpm
       time_step_control.initialize(state);
       setup_particles();
       state.evaluate_shape_functions();
+      transfer->initialize(state);
     }
 
     template <int dim>
@@ -364,7 +365,10 @@ namespace psmpm
       if (!transfer->step(state, monitor, timer))
         return;
       total_iterations += state.grid->statistics().iterations;
-      locate_particles();
+      // On a grid that moves with the material the particles keep their
+      // cells (and the scheme has evaluated the basis on the moved grid).
+      if (!transfer->moves_grid())
+        locate_particles();
       state.time = time_step_control.snap(state.time + dt);
     }
 

@@ -19,7 +19,8 @@ namespace psmpm
         {Failure::energy_growth, "energy growth", 4},
         {Failure::left_mesh, "particle left the mesh", 5},
         {Failure::non_positive_volume, "non-positive particle volume", 6},
-        {Failure::solver, "mass matrix solver did not converge", 7}};
+        {Failure::solver, "mass matrix solver did not converge", 7},
+        {Failure::inverted_cell, "inverted cell of the moving grid", 9}};
       return table[static_cast<int>(f)];
     }
 

@@ -28,6 +28,9 @@ namespace psmpm
       unstable_volume    = 6, ///< non-positive particle volume
       unstable_solver    = 7, ///< mass matrix solver did not converge
       write_failed       = 8, ///< an output file could not be written
+      /// A cell of a grid that moves with the material (Transfer/Scheme =
+      /// otm) turned inside out: unstable, like 3 to 7.
+      unstable_inverted_cell = 9,
       /// A run stopped by signal N (SIGINT, SIGTERM) after finishing its
       /// step and writing its output ends with interrupted + N.
       interrupted = 128,

@@ -23,7 +23,8 @@ namespace psmpm
       energy_growth,
       left_mesh,
       non_positive_volume,
-      solver
+      solver,
+      inverted_cell ///< a cell of a moving grid (OTM) turned inside out
     };
 
     /// The one table of failures: name and process exit code.

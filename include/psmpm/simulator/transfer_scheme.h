@@ -35,6 +35,26 @@ namespace psmpm
       static void
       declare_parameters(ParameterHandler &prm);
 
+      /// Called once by Simulator::setup() when the state is complete
+      /// (mesh, space, grid, particles and their basis values): a scheme
+      /// checks that it can work with this state (throws ExcMessage naming
+      /// the entry otherwise) and copies what it keeps.
+      virtual void
+      initialize(const State<dim> &state)
+      {
+        (void)state;
+      }
+
+      /// Whether the grid moves with the material (OTM): particles then
+      /// keep their cells, the simulator does not locate them, and the
+      /// scheme itself keeps state.shape_values and shape_gradients
+      /// current (on its moved grid) after every step.
+      virtual bool
+      moves_grid() const
+      {
+        return false;
+      }
+
       /// Advance @p state by state.dt. Returns false if the step had to
       /// be abandoned (a failure is reported, positions are not advanced).
       virtual bool
