@@ -14,6 +14,7 @@
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/solver/l2_projection.h>
+#include <psmpm/solver/mass_matrix_study.h>
 
 #include <cmath>
 #include <csignal>
@@ -366,9 +367,13 @@ end
       prm.leave_subsection();
       prm.declare_entry("Problem",
                         "mpm",
-                        Patterns::Selection("mpm|l2 projection"),
+                        Patterns::Selection(
+                          "mpm|l2 projection|mass matrix study"),
                         "mpm: material point simulation; l2 projection: "
-                        "project Projection/Function onto the basis.");
+                        "project Projection/Function onto the basis; mass "
+                        "matrix study: condition numbers and CG and "
+                        "p-multigrid iterations of B-spline mass matrices "
+                        "(solver_study.tsv, doc/solver_study.md).");
       prm.enter_subsection("Geometry");
       prm.declare_entry("Dimension",
                         "2",
@@ -378,6 +383,7 @@ end
       prm.leave_subsection();
       Simulator::Simulator<2>::declare_parameters(prm);
       Solver::L2Projection::declare_parameters(prm);
+      Solver::MassMatrixStudy::declare_parameters(prm);
       RunLimits::declare_parameters(prm);
     }
 
@@ -394,6 +400,7 @@ end
       std::unique_ptr<Simulator::SimulatorBase> solver;
       Mesh::MeshGenerator<2>                    mesh;
       Solver::L2Projection                      projection;
+      Solver::MassMatrixStudy                   mass_matrix_study;
       RunLimits                                 limits;
       std::string                               problem, basis, dir;
       bool                                      test_output = false;
@@ -472,6 +479,8 @@ end
               solver->progress_interval    = progress_interval;
               limits.check_run(solver->estimate_size());
             }
+          else if (problem == "mass matrix study")
+            mass_matrix_study.parse_parameters(prm);
           else
             {
               mesh.parse_parameters(prm);
@@ -570,6 +579,11 @@ end
               status = solver->run(dir);
               stop.reset();
               solver->fill_summary(summary);
+            }
+          else if (problem == "mass matrix study")
+            {
+              mass_matrix_study.run(dir, summary, comm);
+              summary.set("status", "completed");
             }
           else
             {
