@@ -12,6 +12,7 @@
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
 #include <psmpm/postprocess/summary.h>
+#include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/solver/l2_projection.h>
 #include <psmpm/solver/mass_matrix_study.h>
@@ -88,6 +89,8 @@ end
         "Options:\n"
         "  --set \"Subsection/Entry=value\"  override one entry (repeatable)\n"
         "  --validate            check the input (parameters, mesh, time step), write nothing\n"
+        "  --resume              continue from the newest checkpoint in the output\n"
+        "                        directory (same scene; Time/End time may grow)\n"
         "  --print-parameters    print all entries with defaults and documentation\n"
         "  --version             print the version\n"
         "  --help                this text\n"
@@ -260,6 +263,7 @@ end
         std::string              prm_file;
         std::vector<std::string> overrides;
         bool                     validate         = false;
+        bool                     resume           = false;
         bool                     print_parameters = false;
         bool                     help             = false;
         bool                     version          = false;
@@ -278,6 +282,8 @@ end
               cl.version = true;
             else if (a == "--validate")
               cl.validate = true;
+            else if (a == "--resume")
+              cl.resume = true;
             else if (a == "--print-parameters")
               cl.print_parameters = true;
             else if (a == "--set")
@@ -343,8 +349,9 @@ end
                         "Directory for VTU/PVD output, statistics.txt, "
                         "parameters.prm, summary.json and log.txt (the screen "
                         "output); created if needed. The files of an earlier "
-                        "psmpm run in it are removed first; a second run "
-                        "into a directory in use (psmpm.lock) is refused.");
+                        "psmpm run in it are removed first (unless the run "
+                        "is resumed with --resume); a second run into a "
+                        "directory in use (psmpm.lock) is refused.");
       prm.enter_subsection("Output");
       prm.declare_entry("Time interval",
                         "0",
@@ -511,13 +518,39 @@ end
             std::cout << "psmpm: " << where << " is valid.\n";
           return success;
         }
+      if (cl.resume && !solver)
+        {
+          if (root)
+            std::cerr << "psmpm: error in " << where
+                      << ": --resume needs an mpm scene (Problem = mpm).\n";
+          return bad_input;
+        }
 
-      // The output directory: created, locked and cleared on rank 0; all
-      // ranks learn of a failure and stop with bad_input.
+      // The output directory: created, locked and cleared on rank 0 (kept
+      // for --resume); all ranks learn of a failure and stop with
+      // bad_input.
       OutputDirectory output;
       try
         {
-          output.open(dir, comm);
+          output.open(dir, comm, cl.resume);
+          if (cl.resume)
+            {
+              // The newest checkpoint; a damaged one is reported, not
+              // skipped: the user decides whether to remove it.
+              std::vector<std::string> files;
+              if (root)
+                files = Simulator::Checkpoint::list(dir);
+              files = Utilities::MPI::broadcast(comm, files, 0);
+              AssertThrow(!files.empty(),
+                          ExcMessage(
+                            "--resume: no checkpoint (checkpoint-<step>.h5) "
+                            "in the output directory '" +
+                            dir +
+                            "'. A run writes one at its end, when it is "
+                            "interrupted and every Checkpoint/Interval "
+                            "steps."));
+              solver->resume(dir, files);
+            }
         }
       catch (const std::exception &e)
         {
@@ -526,7 +559,7 @@ end
                       << "\n";
           return bad_input;
         }
-      LogFile                      log_file(dir + "/log.txt", root);
+      LogFile                      log_file(dir + "/log.txt", root, cl.resume);
       Postprocess::Summary         summary;
       std::unique_ptr<StopRequest> stop;
       const std::string            parameter_file =

@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <psmpm/app/output_directory.h>
+#include <psmpm/simulator/checkpoint.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -35,6 +36,14 @@ namespace psmpm
         return buf;
       }
 
+      /// A temporary file of an interrupted atomic write.
+      bool
+      is_temporary(const std::string &name)
+      {
+        static const std::regex tmp(".*\\.tmp");
+        return std::regex_match(name, tmp);
+      }
+
       /// Files an earlier run of psmpm may have left.
       bool
       written_by_psmpm(const std::string &name)
@@ -45,9 +54,9 @@ namespace psmpm
           "statistics\\.txt|summary\\.json|parameters\\.prm|log\\.txt|"
           "tracked_particle\\.txt|projection\\.vtu|mesh\\.vtu|"
           "ps_refinement\\.vtu");
-        static const std::regex tmp(".*\\.tmp");
         return std::regex_match(name, series) ||
-               std::regex_match(name, fixed) || std::regex_match(name, tmp);
+               std::regex_match(name, fixed) || is_temporary(name) ||
+               Simulator::Checkpoint::is_checkpoint_file(name);
       }
 
       /// Take the lock (O_EXCL); a lock of a dead process on this host
@@ -109,7 +118,9 @@ namespace psmpm
     }
 
     void
-    OutputDirectory::open(const std::string &directory, MPI_Comm comm)
+    OutputDirectory::open(const std::string &directory,
+                          MPI_Comm           comm,
+                          const bool         resume)
     {
       std::string error;
       if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -134,12 +145,17 @@ namespace psmpm
                       lock_file = file;
                       for (const auto &entry :
                            fs::directory_iterator(directory, ec))
-                        if (entry.is_regular_file() &&
-                            written_by_psmpm(entry.path().filename().string()))
-                          fs::remove(entry.path(), ec);
+                        {
+                          const std::string name =
+                            entry.path().filename().string();
+                          if (entry.is_regular_file() &&
+                              (resume ? is_temporary(name) :
+                                        written_by_psmpm(name)))
+                            fs::remove(entry.path(), ec);
+                        }
                       // Can a file be created in it at all?
                       const std::string probe = directory + "/log.txt";
-                      std::ofstream     test(probe);
+                      std::ofstream     test(probe, std::ios::app);
                       if (!test.is_open())
                         error = "Output directory = " + directory +
                                 ": cannot create files in it (" +
@@ -226,11 +242,13 @@ namespace psmpm
       };
     } // namespace
 
-    LogFile::LogFile(const std::string &file, const bool active)
+    LogFile::LogFile(const std::string &file,
+                     const bool         active,
+                     const bool         append)
     {
       if (!active)
         return;
-      log.open(file);
+      log.open(file, append ? std::ios::app : std::ios::out);
       if (!log.is_open())
         return;
       old_out = std::cout.rdbuf();

@@ -3,9 +3,11 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
+#include <psmpm/base/archive.h>
 #include <psmpm/particles/particle_set.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace psmpm
@@ -219,6 +221,99 @@ namespace psmpm
         std::copy(copy.begin() + order[i] * n_s,
                   copy.begin() + (order[i] + 1) * n_s,
                   state.begin() + i * n_s);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticleSet<dim>::save(Archive &archive) const
+    {
+      const std::size_t n = size();
+      archive.put_integers("particles/id", id);
+      archive.put_integers("particles/cell",
+                           std::vector<std::uint64_t>(cell.begin(),
+                                                      cell.end()));
+      archive.put("particles/mass", mass);
+      archive.put("particles/volume", volume);
+      archive.put("particles/density", density);
+      const auto vectors = [&](const std::string &name, const auto &array) {
+        std::vector<double> v;
+        v.reserve(n * dim);
+        for (const auto &x : array)
+          for (unsigned int d = 0; d < dim; ++d)
+            v.push_back(x[d]);
+        archive.put("particles/" + name, v, dim);
+      };
+      vectors("position", position);
+      vectors("initial_position", initial_position);
+      vectors("displacement", displacement);
+      vectors("velocity", velocity);
+      const auto tensors = [&](const std::string &name, const auto &array) {
+        std::vector<double> v;
+        v.reserve(n * dim * dim);
+        for (const auto &t : array)
+          for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int e = 0; e < dim; ++e)
+              v.push_back(t[d][e]);
+        archive.put("particles/" + name, v, dim * dim);
+      };
+      tensors("stress", stress);
+      tensors("affine", affine);
+      archive.put("particles/state", state, n_state());
+      std::string names;
+      for (const auto &s : state_names)
+        names += s + "\n";
+      archive.put_text("particles/state_names", names);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticleSet<dim>::load(const Archive &archive)
+    {
+      std::string names;
+      for (const auto &s : state_names)
+        names += s + "\n";
+      AssertThrow(archive.get_text("particles/state_names") == names,
+                  ExcMessage("the material state of the particles differs "
+                             "(another Material/Model?)"));
+      const auto     &ids = archive.get_integers("particles/id");
+      const long long n   = ids.size();
+      const auto     &c   = archive.get_integers("particles/cell", n);
+      for (const auto v : c)
+        AssertThrow(v <= std::numeric_limits<unsigned int>::max(),
+                    ExcMessage("entry 'particles/cell' is out of range"));
+      id = ids;
+      cell.assign(c.begin(), c.end());
+      mass               = archive.get("particles/mass", n);
+      volume             = archive.get("particles/volume", n);
+      density            = archive.get("particles/density", n);
+      const auto vectors = [&](const std::string &name, auto &array) {
+        const auto &v = archive.get("particles/" + name, n * dim);
+        array.resize(n);
+        for (long long i = 0; i < n; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            array[i][d] = v[i * dim + d];
+      };
+      vectors("position", position);
+      vectors("initial_position", initial_position);
+      vectors("displacement", displacement);
+      vectors("velocity", velocity);
+      const auto &s = archive.get("particles/stress", n * dim * dim);
+      stress.resize(n);
+      for (long long i = 0; i < n; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int e = d; e < dim; ++e)
+            stress[i][d][e] = s[(i * dim + d) * dim + e];
+      const auto &a = archive.get("particles/affine", n * dim * dim);
+      affine.resize(n);
+      for (long long i = 0; i < n; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int e = 0; e < dim; ++e)
+            affine[i][d][e] = a[(i * dim + d) * dim + e];
+      state = archive.get("particles/state", n * n_state());
     }
 
 

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/base/archive.h>
 #include <psmpm/postprocess/error_norms.h>
 
 #include <cmath>
@@ -92,6 +93,36 @@ namespace psmpm
           summary.set("errors.velocity_L2_rms_over_time",
                       std::sqrt(sum_velocity2 / n));
         }
+    }
+
+    template <int dim>
+    void
+    ErrorNorms<dim>::save(Archive &archive) const
+    {
+      archive.put("error_norms/sums",
+                  std::vector<double>{max_displacement,
+                                      sum_displacement2,
+                                      sum_velocity2});
+      archive.put_integer("error_norms/n", n);
+      archive.put("error_norms/latest",
+                  std::vector<double>{latest.displacement,
+                                      latest.velocity,
+                                      latest.stress});
+      archive.put_integer("error_norms/latest_step", latest_step);
+    }
+
+    template <int dim>
+    void
+    ErrorNorms<dim>::load(const Archive &archive)
+    {
+      const auto &s     = archive.get("error_norms/sums", 3);
+      max_displacement  = s[0];
+      sum_displacement2 = s[1];
+      sum_velocity2     = s[2];
+      n                 = archive.get_integer("error_norms/n");
+      const auto &l     = archive.get("error_norms/latest", 3);
+      latest            = {l[0], l[1], l[2]};
+      latest_step       = archive.get_integer("error_norms/latest_step");
     }
 
     template class ErrorNorms<1>;

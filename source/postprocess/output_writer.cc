@@ -4,12 +4,15 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/archive.h>
 #include <psmpm/base/checked_file.h>
 #include <psmpm/postprocess/output_writer.h>
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <tuple>
 
 namespace psmpm
@@ -491,6 +494,89 @@ namespace psmpm
         time,
         write_pieces(directory, "grid", step, names, ranges, patches, comm));
       write_pvd("grid", grid_records);
+    }
+
+
+
+    namespace
+    {
+      void
+      save_records(const std::vector<std::pair<double, std::string>> &records,
+                   const std::string                                 &name,
+                   Archive                                           &archive)
+      {
+        std::vector<double> times;
+        std::string         files;
+        for (const auto &r : records)
+          {
+            times.push_back(r.first);
+            files += r.second + "\n";
+          }
+        archive.put("output/" + name + "_times", times);
+        archive.put_text("output/" + name + "_files", files);
+      }
+
+      std::vector<std::pair<double, std::string>>
+      load_records(const std::string &name, const Archive &archive)
+      {
+        const auto &times = archive.get("output/" + name + "_times");
+        const auto  files =
+          Utilities::split_string_list(archive.get_text("output/" + name +
+                                                        "_files"),
+                                       '\n');
+        AssertThrow(files.size() >= times.size(),
+                    ExcMessage("entry 'output/" + name +
+                               "_files' does not match 'output/" + name +
+                               "_times'"));
+        std::vector<std::pair<double, std::string>> records;
+        for (std::size_t i = 0; i < times.size(); ++i)
+          records.emplace_back(times[i], files[i]);
+        return records;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    OutputWriter<dim>::save(Archive &archive) const
+    {
+      save_records(particle_records, "particles", archive);
+      save_records(grid_records, "grid", archive);
+    }
+
+
+
+    template <int dim>
+    void
+    OutputWriter<dim>::load(const Archive &archive)
+    {
+      particle_records = load_records("particles", archive);
+      grid_records     = load_records("grid", archive);
+    }
+
+
+
+    template <int dim>
+    void
+    OutputWriter<dim>::restore_files(const unsigned int step) const
+    {
+      write_pvd("particles", particle_records);
+      write_pvd("grid", grid_records);
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      static const std::regex series(
+        "(particles|grid)-([0-9]+)(\\.[0-9]+)?\\.(vtu|pvtu)");
+      std::error_code ec;
+      for (const auto &entry :
+           std::filesystem::directory_iterator(directory, ec))
+        {
+          std::smatch       m;
+          const std::string name = entry.path().filename().string();
+          if (entry.is_regular_file() && std::regex_match(name, m, series) &&
+              std::stoull(m[2].str()) > step)
+            std::filesystem::remove(entry.path(), ec);
+        }
     }
 
 

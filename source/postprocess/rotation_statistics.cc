@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
 
+#include <psmpm/base/archive.h>
 #include <psmpm/postprocess/rotation_statistics.h>
 
 #include <cmath>
@@ -42,15 +43,19 @@ namespace psmpm
                   mass += particles.mass[p];
                   first += particles.mass[p] * particles.initial_position[p];
                 }
-              mass               = Utilities::MPI::sum(mass, comm);
-              first              = Utilities::MPI::sum(first, comm);
-              centre             = Point<2>(first / mass);
+              mass   = Utilities::MPI::sum(mass, comm);
+              first  = Utilities::MPI::sum(first, comm);
+              centre = Point<2>(first / mass);
+            }
+          if (!have_control_points)
+            {
               const auto &global = state.grid->relevant_global_indices();
               const std::vector<Point<2>> all =
                 state.space->control_points(state.dof_handler);
               control_points.resize(global.size());
               for (std::size_t l = 0; l < global.size(); ++l)
                 control_points[l] = all[global[l]];
+              have_control_points = true;
             }
           // Current centre of mass, for the angle.
           double       mass = 0;
@@ -141,6 +146,39 @@ namespace psmpm
                     (last.angular_momentum - initial.angular_momentum) /
                       reference);
       summary.set("rotation_angle_final", last.rotation_angle);
+    }
+
+    template <int dim>
+    void
+    RotationStatistics<dim>::save(Archive &archive) const
+    {
+      archive.put_integer("rotation_statistics/initialized", initialized);
+      std::vector<double> c(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        c[d] = centre[d];
+      archive.put("rotation_statistics/centre", c);
+      archive.put("rotation_statistics/initial",
+                  std::vector<double>{initial.angular_momentum,
+                                      initial.rotation_angle});
+      archive.put("rotation_statistics/last",
+                  std::vector<double>{last.angular_momentum,
+                                      last.rotation_angle});
+      archive.put("rotation_statistics/scale", scale);
+    }
+
+    template <int dim>
+    void
+    RotationStatistics<dim>::load(const Archive &archive)
+    {
+      initialized = archive.get_integer("rotation_statistics/initialized") != 0;
+      const auto &c = archive.get("rotation_statistics/centre", dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = c[d];
+      const auto &i = archive.get("rotation_statistics/initial", 2);
+      initial       = {i[0], i[1]};
+      const auto &l = archive.get("rotation_statistics/last", 2);
+      last          = {l[0], l[1]};
+      scale         = archive.get_number("rotation_statistics/scale");
     }
 
     template class RotationStatistics<1>;

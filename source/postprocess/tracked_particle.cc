@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/base/archive.h>
 #include <psmpm/base/checked_file.h>
 #include <psmpm/postprocess/oscillation.h>
 #include <psmpm/postprocess/tracked_particle.h>
@@ -114,6 +115,37 @@ namespace psmpm
             }
           Oscillation::fill_summary(t, x, x_reference, summary);
         }
+    }
+
+    template <int dim>
+    void
+    TrackedParticle<dim>::save(Archive &archive) const
+    {
+      archive.put_integer("tracked_particle/id", id);
+      std::vector<double> h;
+      for (const auto &r : history)
+        h.insert(h.end(), r.begin(), r.end());
+      archive.put("tracked_particle/history", h, 5);
+      archive.put("tracked_particle/sums",
+                  std::vector<double>{velocity2, displacement2});
+    }
+
+    template <int dim>
+    void
+    TrackedParticle<dim>::load(const Archive &archive)
+    {
+      id            = archive.get_integer("tracked_particle/id");
+      const auto &h = archive.get("tracked_particle/history");
+      AssertThrow(h.size() % 5 == 0,
+                  ExcMessage("entry 'tracked_particle/history' is not a "
+                             "table of 5 columns"));
+      history.resize(h.size() / 5);
+      for (std::size_t i = 0; i < history.size(); ++i)
+        for (unsigned int k = 0; k < 5; ++k)
+          history[i][k] = h[5 * i + k];
+      const auto &s = archive.get("tracked_particle/sums", 2);
+      velocity2     = s[0];
+      displacement2 = s[1];
     }
 
     template class TrackedParticle<1>;

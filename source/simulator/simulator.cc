@@ -5,16 +5,21 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/archive.h>
 #include <psmpm/base/checked_file.h>
 #include <psmpm/base/format.h>
 #include <psmpm/base/stop_request.h>
+#include <psmpm/base/version.h>
 #include <psmpm/postprocess/progress.h>
 #include <psmpm/simulator/simulator.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
 #include <cmath>
 #include <csignal>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 namespace psmpm
 {
@@ -52,6 +57,7 @@ namespace psmpm
       TransferScheme<2>::declare_parameters(prm);
       TimeStepControl::declare_parameters(prm);
       StabilityMonitor::declare_parameters(prm);
+      Checkpoint::declare_parameters(prm);
       Postprocess::OutputWriter<2>::declare_parameters(prm);
 
       prm.enter_subsection("Basis");
@@ -200,6 +206,12 @@ namespace psmpm
                              std::to_string(dim) + " coordinate(s)."));
 
       monitor.parse_parameters(prm);
+      checkpoint.parse_parameters(prm);
+
+      // What a checkpoint of this run is compared with on resume.
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      parameter_text = text.str();
     }
 
     template <int dim>
@@ -418,6 +430,7 @@ namespace psmpm
                              0.);
       if (reference)
         {
+          step_times.push_back(state.time);
           reference->advance_to(state.time);
           error_norms->execute(state,
                                time_step_control.finished(state.time),
@@ -425,7 +438,7 @@ namespace psmpm
           if (tracked)
             tracked->execute(state);
         }
-      statistics.add_value("wall_time", wall_time);
+      statistics.add_value("wall_time", wall_offset + wall_time);
       if (monitor.check(e.total(), e.scale(), e.momentum.norm(), comm) &&
           status == Status::completed)
         {
@@ -449,6 +462,15 @@ namespace psmpm
                          {{"velocity", &state.grid_velocity},
                           {"acceleration", &state.grid_acceleration}},
                          {{"mass", &state.grid->lumped_mass()}});
+      write_statistics();
+      if (tracked)
+        tracked->write(output_directory, comm);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::write_statistics()
+    {
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         {
           std::vector<std::string> columns = {"time",
@@ -482,13 +504,11 @@ namespace psmpm
                 TableHandler::table_with_separate_column_description);
             });
         }
-      if (tracked)
-        tracked->write(output_directory, comm);
     }
 
     template <int dim>
-    Status
-    Simulator<dim>::run(const std::string &directory)
+    void
+    Simulator<dim>::create_postprocessors(const std::string &directory)
     {
       output_directory = directory;
       // Linear fields are exact at the corners; sub-cells cost output
@@ -497,8 +517,6 @@ namespace psmpm
         subdivisions > 0 ? subdivisions : (state.space->degree() == 1 ? 1 : 4);
       writer =
         std::make_unique<Postprocess::OutputWriter<dim>>(directory, comm, s);
-      Timer wall;
-      wall.start();
       if (reference)
         {
           error_norms =
@@ -512,20 +530,29 @@ namespace psmpm
               tracked =
                 std::make_unique<Postprocess::TrackedParticle<dim>>(X,
                                                                     *reference);
-              tracked->initialize(state);
             }
         }
-      state.grid_velocity.assign(state.grid->relevant_dofs().n_elements(),
-                                 Tensor<1, dim>());
-      state.grid_acceleration = state.grid_velocity;
-      state.dt                = 0;
+    }
+
+    template <int dim>
+    Status
+    Simulator<dim>::run(const std::string &directory)
+    {
+      const bool resumed = !resumed_from.empty();
+      if (!resumed)
+        create_postprocessors(directory);
+      AssertThrow(directory == output_directory,
+                  ExcMessage("resume() and run() name different output "
+                             "directories."));
+      wall.reset();
+      wall.start();
       // Every rank learns of a failed write (the first message wins) and
       // the run ends with ExcWriteFailed on all of them.
-      const auto checked_write_output = [this]() {
+      const auto checked = [this](const auto &write) {
         std::string error;
         try
           {
-            write_output();
+            write();
           }
         catch (const ExcWriteFailed &e)
           {
@@ -535,8 +562,30 @@ namespace psmpm
           if (!e.empty())
             throw ExcWriteFailed(e);
       };
-      postprocess(0);
-      checked_write_output();
+      const auto checked_write_output = [&]() {
+        checked([this]() { write_output(); });
+      };
+      state.grid_velocity.assign(state.grid->relevant_dofs().n_elements(),
+                                 Tensor<1, dim>());
+      state.grid_acceleration = state.grid_velocity;
+      if (!resumed)
+        {
+          if (tracked)
+            tracked->initialize(state);
+          state.dt = 0;
+          postprocess(0);
+          checked_write_output();
+          checkpoint.start(state.step);
+        }
+      else
+        {
+          // The files as they were at the checkpoint: a run that went on
+          // after it (and was killed) wrote rows and outputs beyond it.
+          checked([this]() { restore_files(); });
+          if (!quiet)
+            pcout << "psmpm: resumed from " << resumed_from << " (step "
+                  << state.step << ", t = " << state.time << ")" << std::endl;
+        }
 
       if (!time_step_control.warning().empty())
         pcout << "psmpm: warning: " << time_step_control.warning() << std::endl;
@@ -554,7 +603,6 @@ namespace psmpm
                                        Utilities::MPI::this_mpi_process(comm) ==
                                          0,
                                      progress_interval);
-      unsigned int time_outputs = 0; // multiples of the time interval passed
       while (!time_step_control.finished(state.time) &&
              status == Status::completed)
         {
@@ -576,10 +624,16 @@ namespace psmpm
             }
           if (due)
             checked_write_output();
+          if (status == Status::completed && checkpoint.due(state.step, comm))
+            checked([this]() { write_checkpoint(); });
           progress.update(state.step,
                           state.time,
                           time_step_control.get_end_time());
         }
+      // The end of the run and an interruption leave a checkpoint to
+      // continue from (an unstable state is not worth continuing).
+      if (status != Status::unstable && checkpoint.last_step() != state.step)
+        checked([this]() { write_checkpoint(); });
       wall.stop();
       if (!quiet)
         {
@@ -593,6 +647,216 @@ namespace psmpm
                   << "); output written." << std::endl;
         }
       return status;
+    }
+
+    namespace
+    {
+      /// The format a checkpoint declares; resume refuses others.
+      const char *checkpoint_format = "psmpm checkpoint 1";
+    } // namespace
+
+    template <int dim>
+    void
+    Simulator<dim>::write_checkpoint()
+    {
+      TimerOutput::Scope t(timer, "checkpoint");
+      Archive            archive;
+      archive.put_text("psmpm/format", checkpoint_format);
+      archive.put_text("psmpm/version", version());
+      archive.put_text("psmpm/parameters", parameter_text);
+      archive.put_integer("psmpm/dimension", dim);
+      archive.put_integer("psmpm/n_mpi_ranks",
+                          Utilities::MPI::n_mpi_processes(comm));
+
+      archive.put("simulator/time", state.time);
+      archive.put_integer("simulator/step", state.step);
+      archive.put("simulator/dt", state.dt);
+      archive.put_integer("simulator/cg_iterations", total_iterations);
+      archive.put_integer("simulator/time_outputs", time_outputs);
+      archive.put("simulator/wall_time", wall_offset + wall.wall_time());
+      archive.put("simulator/step_times", step_times);
+      {
+        // The rows so far, exactly (doubles, integers and "-" entries
+        // with their column formats): deal.II's own serialization.
+        std::ostringstream              bytes;
+        boost::archive::binary_oarchive out(bytes);
+        out << statistics;
+        archive.put_bytes("simulator/statistics", bytes.str());
+      }
+
+      time_step_control.save(archive);
+      monitor.save(archive);
+      rotation_statistics.save(archive);
+      if (error_norms)
+        error_norms->save(archive);
+      if (tracked)
+        tracked->save(archive);
+      writer->save(archive);
+      // The same on every rank where a vertex is seen, 0 elsewhere.
+      std::vector<double> history = state.grid->strategy().history();
+      history.resize(Utilities::MPI::max(history.size(), comm), 0.);
+      std::vector<double> combined(history.size());
+      Utilities::MPI::max(history, comm, combined);
+      archive.put("mass_strategy/history", combined);
+
+      Checkpoint::gather_particles(state.particles, archive, comm);
+      checkpoint.write(output_directory, state.step, archive, comm);
+      if (!quiet)
+        pcout << "psmpm: checkpoint " << output_directory << "/"
+              << Checkpoint::file_name(state.step) << std::endl;
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::resume(const std::string              &directory,
+                           const std::vector<std::string> &files)
+    {
+      AssertThrow(!files.empty(), ExcMessage("no checkpoint to resume from"));
+      create_postprocessors(directory);
+
+      // Rank 0 reads the newest readable file and checks it; every rank
+      // learns the verdict.
+      Archive     archive;
+      std::string error, file = files[0];
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          std::string damaged;
+          for (const auto &f : files)
+            {
+              file = f;
+              try
+                {
+                  archive = Archive::read_hdf5(f);
+                  damaged.clear();
+                  break;
+                }
+              catch (const ExceptionBase &e)
+                {
+                  std::ostringstream s;
+                  e.print_info(s);
+                  damaged +=
+                    (damaged.empty() ? "" : "; ") + Utilities::trim(s.str());
+                  if (!quiet && f != files.back())
+                    std::cerr << "psmpm: warning: " << Utilities::trim(s.str())
+                              << "; trying the previous checkpoint"
+                              << std::endl;
+                }
+            }
+          try
+            {
+              AssertThrow(damaged.empty(), ExcMessage(damaged));
+              AssertThrow(archive.has("psmpm/format") &&
+                            archive.get_text("psmpm/format") ==
+                              checkpoint_format,
+                          ExcMessage("not a psmpm checkpoint of format '" +
+                                     std::string(checkpoint_format) + "'"));
+              const auto differences =
+                Checkpoint::parameter_differences(archive.get_text(
+                                                    "psmpm/parameters"),
+                                                  parameter_text);
+              std::string list;
+              for (const auto &d : differences)
+                list += (list.empty() ? "" : "; ") + d;
+              AssertThrow(differences.empty(),
+                          ExcMessage(
+                            "written with other parameters (" + list +
+                            "); only Time/End time, the Output and "
+                            "Checkpoint intervals and Limits may change "
+                            "when resuming"));
+            }
+          catch (const ExceptionBase &e)
+            {
+              std::ostringstream s;
+              e.print_info(s);
+              error = Utilities::trim(s.str());
+            }
+          catch (const std::exception &e)
+            {
+              error = e.what();
+            }
+        }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      file  = Utilities::MPI::broadcast(comm, file, 0);
+      if (!error.empty())
+        {
+          // Archive::read_hdf5() names the file itself.
+          if (error.rfind("checkpoint ", 0) != 0)
+            error = "checkpoint " + file + ": " + error;
+          AssertThrow(false, ExcMessage(error));
+        }
+
+      try
+        {
+          // Every rank needs everything but the particles, which go to
+          // the ranks owning their cells.
+          Archive shared = archive;
+          shared.erase_prefix("particles/");
+          shared = Utilities::MPI::broadcast(comm, shared, 0);
+          Checkpoint::scatter_particles(archive,
+                                        state.cell_owner,
+                                        state.particles,
+                                        comm);
+          archive = Archive();
+
+          state.time       = shared.get_number("simulator/time");
+          state.step       = shared.get_integer("simulator/step");
+          state.dt         = shared.get_number("simulator/dt");
+          total_iterations = shared.get_integer("simulator/cg_iterations");
+          time_outputs     = shared.get_integer("simulator/time_outputs");
+          wall_offset      = shared.get_number("simulator/wall_time");
+          {
+            std::istringstream bytes(shared.get_bytes("simulator/statistics"));
+            boost::archive::binary_iarchive in(bytes);
+            statistics = TableHandler();
+            in >> statistics;
+          }
+          time_step_control.load(shared);
+          monitor.load(shared);
+          rotation_statistics.load(shared);
+          if (error_norms)
+            error_norms->load(shared);
+          if (tracked)
+            tracked->load(shared);
+          writer->load(shared);
+          state.grid->strategy().restore_history(
+            shared.get("mass_strategy/history"));
+
+          // References computed alongside the run (ULFEM, the cantilever)
+          // are deterministic in the times they are advanced to.
+          step_times = shared.get("simulator/step_times");
+          if (reference)
+            for (const double t : step_times)
+              reference->advance_to(t);
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream s;
+          e.print_info(s);
+          AssertThrow(false,
+                      ExcMessage("checkpoint " + file + ": " +
+                                 Utilities::trim(s.str())));
+        }
+      catch (const boost::archive::archive_exception &e)
+        {
+          AssertThrow(false,
+                      ExcMessage("checkpoint " + file +
+                                 ": entry 'simulator/statistics' is damaged (" +
+                                 e.what() + ")"));
+        }
+      state.evaluate_shape_functions();
+      resumed_from = file;
+      resumed_step = state.step;
+      checkpoint.start(state.step);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::restore_files()
+    {
+      write_statistics();
+      writer->restore_files(state.step);
+      if (tracked)
+        tracked->write(output_directory, comm);
     }
 
     template <int dim>
@@ -617,6 +881,11 @@ namespace psmpm
           summary.set("failed_time", failed_time);
         }
       summary.set_integer("steps", state.step);
+      if (!resumed_from.empty())
+        {
+          summary.set("resumed_from", resumed_from);
+          summary.set_integer("resumed_step", resumed_step);
+        }
       if (!time_step_control.warning().empty())
         summary.set("warning", time_step_control.warning());
       summary.set_integer("dimension", dim);
@@ -641,7 +910,8 @@ namespace psmpm
           if (tracked)
             tracked->fill_summary(summary);
         }
-      // Throughput of the time loop proper: every timed phase but output.
+      // Throughput of the time loop proper: every timed phase but output
+      // and checkpoints.
       const auto timings = timer.get_summary_data(TimerOutput::total_wall_time);
       double     loop    = 0;
       for (const auto &t : timings)
@@ -649,7 +919,7 @@ namespace psmpm
           std::string key = t.first;
           std::replace(key.begin(), key.end(), ' ', '_');
           summary.set("timers_s." + key, t.second);
-          if (t.first != "output")
+          if (t.first != "output" && t.first != "checkpoint")
             loop += t.second;
         }
       summary.set("time_loop_s", loop);

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/base/archive.h>
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/stability_monitor.h>
 
@@ -81,6 +82,22 @@ namespace psmpm
           return true;
         }
       return false;
+    }
+
+    void
+    StabilityMonitor::save(Archive &archive) const
+    {
+      archive.put_integer("stability_monitor/initialized", initialized);
+      archive.put("stability_monitor/initial_energy", initial_energy);
+      archive.put("stability_monitor/energy_scale", energy_scale);
+    }
+
+    void
+    StabilityMonitor::load(const Archive &archive)
+    {
+      initialized = archive.get_integer("stability_monitor/initialized") != 0;
+      initial_energy = archive.get_number("stability_monitor/initial_energy");
+      energy_scale   = archive.get_number("stability_monitor/energy_scale");
     }
   } // namespace Simulator
 } // namespace psmpm

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
 
+#include <psmpm/base/archive.h>
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/time_step_control.h>
 
@@ -108,6 +109,22 @@ namespace psmpm
       time_step     = courant_number * factor * h_min / c_max;
       min_time_step = std::min(min_time_step, time_step);
       max_time_step = std::max(max_time_step, time_step);
+    }
+
+    void
+    TimeStepControl::save(Archive &archive) const
+    {
+      archive.put("time_step_control/time_step", time_step);
+      archive.put("time_step_control/min_time_step", min_time_step);
+      archive.put("time_step_control/max_time_step", max_time_step);
+    }
+
+    void
+    TimeStepControl::load(const Archive &archive)
+    {
+      time_step     = archive.get_number("time_step_control/time_step");
+      min_time_step = archive.get_number("time_step_control/min_time_step");
+      max_time_step = archive.get_number("time_step_control/max_time_step");
     }
 
     template void

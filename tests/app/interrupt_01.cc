@@ -4,6 +4,9 @@
 // lives (exit code 2); SIGTERM ends the first run after its step, with its
 // output, summary.json "status": "interrupted" and exit code 143; the
 // lock is released. SIGINT (Ctrl-C) gives exit code 130.
+#include <psmpm/base/archive.h>
+#include <psmpm/simulator/checkpoint.h>
+
 #include "../app_tests.h"
 
 #include <chrono>
@@ -125,6 +128,13 @@ main()
       PSMPM_CHECK(out,
                   fs::exists("long/particles-" +
                              Utilities::int_to_string(n, 5) + ".pvtu"));
+      // And a checkpoint of that step to resume from.
+      const std::string checkpoint =
+        "long/" + psmpm::Simulator::Checkpoint::file_name(n);
+      PSMPM_CHECK(out, fs::exists(checkpoint));
+      PSMPM_CHECK(out,
+                  psmpm::Archive::read_hdf5(checkpoint)
+                      .get_integer("simulator/step") == n);
     }
 
   // Ctrl-C: the same, with exit code 130.

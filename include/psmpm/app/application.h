@@ -47,9 +47,9 @@ namespace psmpm
     /**
      * Run psmpm with the command line @p args (without the program name):
      * `[scene.prm] [--set "Subsection/Entry=value"]... [--validate]
-     * [--print-parameters] [--version] [--help]`. Returns an ExitCode; messages
-     * go to std::cout / std::cerr on rank 0. Nothing is written unless the
-     * whole input is valid.
+     * [--resume] [--print-parameters] [--version] [--help]`. Returns an
+     * ExitCode; messages go to std::cout / std::cerr on rank 0. Nothing is
+     * written unless the whole input is valid.
      */
     int
     run(const std::vector<std::string> &args, MPI_Comm comm);

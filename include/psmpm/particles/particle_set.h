@@ -14,6 +14,8 @@
 
 namespace psmpm
 {
+  class Archive;
+
   namespace Particles
   {
     using namespace dealii;
@@ -97,6 +99,22 @@ namespace psmpm
       /// Reorder particles by cell for locality (counting sort).
       void
       sort_by_cell(const unsigned int n_cells);
+
+      /**
+       * Every array, in the current order, into @p archive under
+       * "particles/" (checkpoints): id and cell (integers), mass, volume,
+       * density (one value per particle), the vectors (n x dim), stress and
+       * affine matrix (n x dim^2, row-major) and the state block (n x
+       * n_state(), names in "particles/state_names", one per line).
+       */
+      void
+      save(Archive &archive) const;
+
+      /// Replace all particles by those save() wrote; throws ExcMessage
+      /// naming the entry if one is missing or inconsistent, or if the
+      /// state names differ from get_state_names().
+      void
+      load(const Archive &archive);
 
       // Kinematics.
       std::vector<std::uint64_t>           id;

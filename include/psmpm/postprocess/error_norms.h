@@ -12,6 +12,8 @@
 
 namespace psmpm
 {
+  class Archive;
+
   namespace Postprocess
   {
     /// Global error norms (thesis eq. 4.4) against a reference.
@@ -47,6 +49,12 @@ namespace psmpm
 
       void
       fill_summary(const Simulator::State<dim> &state, Summary &summary) const;
+
+      /// Maximum and sums over time, the latest errors (checkpoints).
+      void
+      save(Archive &archive) const;
+      void
+      load(const Archive &archive);
 
     private:
       const Reference<dim> &reference;

@@ -18,6 +18,8 @@
 
 namespace psmpm
 {
+  class Archive;
+
   namespace Postprocess
   {
     using namespace dealii;
@@ -87,6 +89,21 @@ namespace psmpm
       {
         return subdivisions;
       }
+
+      /// The .pvd records so far (checkpoints).
+      void
+      save(Archive &archive) const;
+      void
+      load(const Archive &archive);
+
+      /**
+       * After load(): rewrite particles.pvd and grid.pvd from the records
+       * and remove the VTU/PVTU files of steps after @p step, which a run
+       * that went on after its checkpoint wrote (rank 0; collective in
+       * that every rank must call it). Throws ExcWriteFailed.
+       */
+      void
+      restore_files(const unsigned int step) const;
 
     private:
       void

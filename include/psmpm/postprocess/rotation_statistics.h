@@ -14,6 +14,8 @@
 
 namespace psmpm
 {
+  class Archive;
+
   namespace Postprocess
   {
     using namespace dealii;
@@ -54,8 +56,16 @@ namespace psmpm
       void
       fill_summary(Summary &summary) const;
 
+      /// Centre, initial and last values and scale (checkpoints; the
+      /// control points follow from the mesh).
+      void
+      save(Archive &archive) const;
+      void
+      load(const Archive &archive);
+
     private:
-      bool                    initialized = false;
+      bool                    initialized         = false;
+      bool                    have_control_points = false;
       Point<dim>              centre;         ///< of the initial configuration
       std::vector<Point<dim>> control_points; ///< local relevant numbering
       Values                  initial, last;

@@ -14,6 +14,8 @@
 
 namespace psmpm
 {
+  class Archive;
+
   namespace Postprocess
   {
     /**
@@ -43,6 +45,12 @@ namespace psmpm
 
       void
       fill_summary(Summary &summary) const;
+
+      /// The particle's id and history (checkpoints).
+      void
+      save(Archive &archive) const;
+      void
+      load(const Archive &archive);
 
     private:
       const Point<dim>                   point;

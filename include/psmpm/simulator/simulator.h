@@ -18,6 +18,7 @@
 #include <psmpm/postprocess/rotation_statistics.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/postprocess/tracked_particle.h>
+#include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
 #include <psmpm/simulator/time_step_control.h>
@@ -71,6 +72,13 @@ namespace psmpm
       setup() = 0;
       virtual Status
       run(const std::string &output_directory) = 0;
+      /// Continue from the first readable of @p checkpoint_files (newest
+      /// first; after setup(), before run(); collective). Throws
+      /// ExcMessage naming the files if none can be read or the one read
+      /// was written with other parameters.
+      virtual void
+      resume(const std::string              &output_directory,
+             const std::vector<std::string> &checkpoint_files) = 0;
       virtual void
       fill_summary(Postprocess::Summary &summary) const = 0;
       virtual Failure
@@ -123,9 +131,30 @@ namespace psmpm
       /// Time loop; writes output into @p output_directory (which exists).
       /// Stops after the step in which any rank received a StopRequest
       /// signal (Status::interrupted); throws ExcWriteFailed on every rank
-      /// if any rank could not write a file.
+      /// if any rank could not write a file. Writes a checkpoint when
+      /// Checkpoint says so, at the end and when interrupted (not when
+      /// unstable).
       Status
       run(const std::string &output_directory) override;
+
+      /**
+       * Replace the state set up from the scene by that of the first of
+       * @p checkpoint_files that can be read (a damaged newer one is
+       * reported as a warning and skipped): particles (handed to the ranks
+       * owning their cells), time, step and step size, and the history of every
+       * component (statistics rows, .pvd records, tracked particle,
+       * energy, rotation and error statistics, mass strategy); references
+       * computed alongside the run are advanced again through the
+       * checkpointed step times. run() then continues the time loop.
+       */
+      void
+      resume(const std::string              &output_directory,
+             const std::vector<std::string> &checkpoint_files) override;
+
+      /// Write a checkpoint of the current state now (collective; run()
+      /// must have started or resume() been called).
+      void
+      write_checkpoint();
 
       /// One time step (public for tests): transfer, locate, advance time.
       void
@@ -197,6 +226,14 @@ namespace psmpm
       postprocess(const double wall_time);
       void
       write_output();
+      void
+      write_statistics();
+      void
+      create_postprocessors(const std::string &directory);
+      /// After resume(): statistics.txt, the .pvd series and
+      /// tracked_particle.txt as of the checkpoint; later VTU files removed.
+      void
+      restore_files();
 
       MPI_Comm           comm;
       ConditionalOStream pcout;
@@ -217,6 +254,7 @@ namespace psmpm
       std::vector<double>                          tracked_point;
 
       // Components.
+      Checkpoint                                         checkpoint;
       std::unique_ptr<TransferScheme<dim>>               transfer;
       TimeStepControl                                    time_step_control;
       StabilityMonitor                                   monitor;
@@ -235,6 +273,18 @@ namespace psmpm
       unsigned int failed_step      = 0;
       double       failed_time      = 0;
       unsigned int total_iterations = 0;
+      /// Multiples of Output/Time interval passed.
+      unsigned int time_outputs = 0;
+      /// The times at which the reference was advanced (checkpoints).
+      std::vector<double> step_times;
+      /// The scene as ShortPRM text (checkpoints compare it).
+      std::string parameter_text;
+      /// The checkpoint this run resumed from ("" if none).
+      std::string  resumed_from;
+      unsigned int resumed_step = 0;
+      /// Wall time of the run before the checkpoint it resumed from.
+      double wall_offset = 0;
+      Timer  wall;
     };
 
     /// A Simulator<1> or Simulator<2> (Geometry/Dimension).

@@ -11,6 +11,8 @@
 
 namespace psmpm
 {
+  class Archive;
+
   namespace Simulator
   {
     using namespace dealii;
@@ -77,6 +79,13 @@ namespace psmpm
             const double energy_scale_now,
             const double momentum_norm,
             MPI_Comm     comm);
+
+      /// The energy balance so far (checkpoints; taken when no failure
+      /// is recorded).
+      void
+      save(Archive &archive) const;
+      void
+      load(const Archive &archive);
 
       Failure
       get_failure() const

@@ -12,6 +12,8 @@
 
 namespace psmpm
 {
+  class Archive;
+
   namespace Simulator
   {
     using namespace dealii;
@@ -95,6 +97,12 @@ namespace psmpm
       {
         return end_time;
       }
+      /// The current, smallest and largest step (checkpoints).
+      void
+      save(Archive &archive) const;
+      void
+      load(const Archive &archive);
+
       /// Non-empty if the step is above the measured stability limit.
       const std::string &
       warning() const

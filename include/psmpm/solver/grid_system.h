@@ -135,6 +135,12 @@ namespace psmpm
       {
         return *mass_strategy;
       }
+      /// For checkpoints (MassStrategy::restore_history()).
+      MassStrategy<dim> &
+      strategy()
+      {
+        return *mass_strategy;
+      }
       bool
       uses_matrix() const
       {

@@ -78,6 +78,26 @@ namespace psmpm
         (void)diagonal;
         return false;
       }
+
+      /**
+       * What later steps depend on besides the particles (checkpoints):
+       * one value per triangulation vertex, or nothing. Combined over the
+       * ranks by their maximum (a rank contributes 0 where it does not
+       * know), so that a checkpoint resumes on any number of ranks.
+       */
+      virtual std::vector<double>
+      history() const
+      {
+        return {};
+      }
+
+      /// Continue from a history() of a checkpoint; the next prepare()
+      /// must then set up the step's constraints even if nothing changed.
+      virtual void
+      restore_history(const std::vector<double> &history)
+      {
+        (void)history;
+      }
     };
 
     template <int dim>

@@ -77,14 +77,35 @@ namespace psmpm
     }
 
     template <int dim>
+    std::vector<double>
+    PoorlySupported<dim>::history() const
+    {
+      return std::vector<double>(previous_outer.begin(), previous_outer.end());
+    }
+
+    template <int dim>
+    void
+    PoorlySupported<dim>::restore_history(const std::vector<double> &history)
+    {
+      // A vertex that this rank does not see (no relevant DoF) was
+      // false here in the run that wrote the checkpoint: prepare() never
+      // reads its flag.
+      previous_outer.assign(history.size(), false);
+      for (std::size_t v = 0; v < history.size(); ++v)
+        previous_outer[v] = history[v] > 0;
+      restored = true;
+    }
+
+    template <int dim>
     bool
     PoorlySupported<dim>::prepare(GridSystem<dim>           &grid,
                                   const std::vector<double> &diagonal)
     {
       const std::vector<bool> outer = poorly_supported_vertices(grid, diagonal);
-      if (outer == previous_outer)
+      if (outer == previous_outer && !restored)
         return false;
       previous_outer = outer;
+      restored       = false;
 
       const auto  &tables    = grid.vertex_tables();
       const auto  &global    = grid.relevant_global_indices();

@@ -37,6 +37,14 @@ namespace psmpm
       prepare(GridSystem<dim>           &grid,
               const std::vector<double> &diagonal) override;
 
+      /// The poorly supported vertices of the last step (1 or 0): the
+      /// hysteresis of the next one.
+      std::vector<double>
+      history() const override;
+
+      void
+      restore_history(const std::vector<double> &history) override;
+
     private:
       std::vector<bool>
       poorly_supported_vertices(const GridSystem<dim>     &grid,
@@ -49,6 +57,8 @@ namespace psmpm
       const double      threshold;
       const bool        extrapolate;
       std::vector<bool> previous_outer;
+      /// Restored from a checkpoint: the constraints must be rebuilt.
+      bool restored = false;
     };
   } // namespace Solver
 } // namespace psmpm

@@ -1,0 +1,399 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/utilities.h>
+
+#include <psmpm/base/checked_file.h>
+#include <psmpm/simulator/checkpoint.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <unistd.h>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    namespace fs = std::filesystem;
+
+    namespace
+    {
+      const std::regex checkpoint_pattern("checkpoint-([0-9]+)\\.h5");
+
+      /// Make a rename in @p directory durable.
+      void
+      sync_directory(const std::string &directory)
+      {
+        const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY);
+        if (fd >= 0)
+          {
+            ::fsync(fd);
+            ::close(fd);
+          }
+      }
+
+      /// "Subsection/Entry" -> value of a parameter file printed as
+      /// ShortPRM (subsection / set / end lines).
+      std::map<std::string, std::string>
+      entries_of(const std::string &text)
+      {
+        std::map<std::string, std::string> entries;
+        std::vector<std::string>           path;
+        std::istringstream                 in(text);
+        std::string                        line;
+        while (std::getline(in, line))
+          {
+            line = Utilities::trim(line);
+            if (line.empty() || line[0] == '#')
+              continue;
+            if (line.rfind("subsection ", 0) == 0)
+              path.push_back(Utilities::trim(line.substr(11)));
+            else if (line == "end")
+              {
+                if (!path.empty())
+                  path.pop_back();
+              }
+            else if (line.rfind("set ", 0) == 0)
+              {
+                const auto  eq   = line.find('=');
+                std::string name = Utilities::trim(line.substr(4, eq - 4));
+                std::string key;
+                for (const auto &p : path)
+                  key += p + "/";
+                entries[key + name] = eq == std::string::npos ?
+                                        "" :
+                                        Utilities::trim(line.substr(eq + 1));
+              }
+          }
+        return entries;
+      }
+
+      /// Entries a resumed run may change: they do not change results.
+      bool
+      may_change(const std::string &key)
+      {
+        static const std::vector<std::string> keys = {
+          "Time/End time",
+          "Output directory",
+          "Output/Interval",
+          "Output/Time interval",
+          "Output/Subdivisions",
+          "Output/Progress interval",
+          "Output/Test output"};
+        return std::find(keys.begin(), keys.end(), key) != keys.end() ||
+               key.rfind("Checkpoint/", 0) == 0 || key.rfind("Limits/", 0) == 0;
+      }
+
+      /// Particle @p i with its cell first: the cell is part of the state
+      /// (the locator's answer depends on the cell it starts from).
+      template <int dim>
+      void
+      pack_with_cell(const Particles::ParticleSet<dim> &particles,
+                     const std::size_t                  i,
+                     std::vector<double>               &buffer)
+      {
+        buffer.push_back(particles.cell[i]);
+        particles.pack(i, buffer);
+      }
+
+      template <int dim>
+      void
+      unpack_with_cells(const std::vector<double>   &buffer,
+                        Particles::ParticleSet<dim> &particles)
+      {
+        const std::size_t   n = 1 + particles.n_packed();
+        std::vector<double> packed;
+        std::vector<double> cells;
+        packed.reserve(buffer.size());
+        for (std::size_t k = 0; k + n <= buffer.size(); k += n)
+          {
+            cells.push_back(buffer[k]);
+            packed.insert(packed.end(),
+                          buffer.begin() + k + 1,
+                          buffer.begin() + k + n);
+          }
+        const std::size_t first = particles.size();
+        particles.unpack(packed);
+        for (std::size_t j = 0; j < cells.size(); ++j)
+          particles.cell[first + j] = static_cast<unsigned int>(cells[j]);
+      }
+    } // namespace
+
+
+
+    void
+    Checkpoint::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpoint");
+      prm.declare_entry(
+        "Interval",
+        "0",
+        Patterns::Integer(0),
+        "Write a checkpoint (checkpoint-<step>.h5 in the output directory, "
+        "HDF5) every this many steps; 0: off. A checkpoint is also written "
+        "at the end of a run and when a run is interrupted (SIGINT, SIGTERM, "
+        "SIGUSR1); psmpm scene.prm --resume continues from the newest one "
+        "with the same results (doc/checkpoints.md).");
+      prm.declare_entry("Wall interval",
+                        "0",
+                        Patterns::Double(0),
+                        "Also write a checkpoint whenever this many minutes "
+                        "of wall time have passed since the last one; 0: off.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Checkpoint::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpoint");
+      interval      = prm.get_integer("Interval");
+      wall_interval = 60 * prm.get_double("Wall interval");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Checkpoint::start(const unsigned int step)
+    {
+      last      = step;
+      last_wall = std::chrono::steady_clock::now();
+    }
+
+
+
+    bool
+    Checkpoint::due(const unsigned int step, MPI_Comm comm) const
+    {
+      if (step == last)
+        return false;
+      if (interval > 0 && step % interval == 0)
+        return true;
+      if (wall_interval > 0)
+        {
+          // Rank 0's clock decides, so that every rank writes together.
+          int passed = std::chrono::duration<double>(
+                         std::chrono::steady_clock::now() - last_wall)
+                         .count() >= wall_interval;
+          MPI_Bcast(&passed, 1, MPI_INT, 0, comm);
+          return passed != 0;
+        }
+      return false;
+    }
+
+
+
+    void
+    Checkpoint::write(const std::string &directory,
+                      const unsigned int step,
+                      const Archive     &archive,
+                      MPI_Comm           comm)
+    {
+      std::string error;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          const std::string file = directory + "/" + file_name(step);
+          const std::string tmp  = directory + "/" + temporary_name;
+          try
+            {
+              archive.write_hdf5(tmp, file);
+              if (std::rename(tmp.c_str(), file.c_str()) != 0)
+                throw ExcWriteFailed("cannot write " + file + ": rename from " +
+                                     tmp + " failed (" + std::strerror(errno) +
+                                     ")");
+              sync_directory(directory);
+              // The new checkpoint is complete and durable: of the older
+              // ones, only the previous is kept (a fallback).
+              const auto      files = list(directory);
+              std::error_code ec;
+              for (std::size_t i = 0; i < files.size(); ++i)
+                if (i >= 2 && files[i] != file)
+                  fs::remove(files[i], ec);
+            }
+          catch (const ExcWriteFailed &e)
+            {
+              std::remove(tmp.c_str());
+              error = e.what();
+            }
+        }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      if (!error.empty())
+        throw ExcWriteFailed(error);
+      start(step);
+    }
+
+
+
+    std::string
+    Checkpoint::file_name(const unsigned int step)
+    {
+      return "checkpoint-" + Utilities::int_to_string(step, 8) + ".h5";
+    }
+
+
+
+    bool
+    Checkpoint::is_checkpoint_file(const std::string &name)
+    {
+      return name == temporary_name ||
+             std::regex_match(name, checkpoint_pattern);
+    }
+
+
+
+    std::vector<std::string>
+    Checkpoint::list(const std::string &directory)
+    {
+      std::vector<std::pair<unsigned long long, std::string>> found;
+      std::error_code                                         ec;
+      for (const auto &entry : fs::directory_iterator(directory, ec))
+        {
+          std::smatch       m;
+          const std::string name = entry.path().filename().string();
+          if (entry.is_regular_file() &&
+              std::regex_match(name, m, checkpoint_pattern))
+            found.emplace_back(std::stoull(m[1].str()), directory + "/" + name);
+        }
+      std::sort(found.rbegin(), found.rend());
+      std::vector<std::string> files;
+      for (const auto &f : found)
+        files.push_back(f.second);
+      return files;
+    }
+
+
+
+    std::vector<std::string>
+    Checkpoint::parameter_differences(const std::string &saved,
+                                      const std::string &current)
+    {
+      const auto               a = entries_of(saved);
+      const auto               b = entries_of(current);
+      std::vector<std::string> differences;
+      for (const auto &[key, value] : a)
+        {
+          if (may_change(key))
+            continue;
+          const auto it = b.find(key);
+          if (it == b.end())
+            differences.push_back(key + ": '" + value + "' -> (not declared)");
+          else if (it->second != value)
+            differences.push_back(key + ": '" + value + "' -> '" + it->second +
+                                  "'");
+        }
+      for (const auto &[key, value] : b)
+        if (!may_change(key) && a.count(key) == 0)
+          differences.push_back(key + ": (not in the checkpoint) -> '" + value +
+                                "'");
+      return differences;
+    }
+
+
+
+    template <int dim>
+    void
+    Checkpoint::gather_particles(const Particles::ParticleSet<dim> &particles,
+                                 Archive                           &archive,
+                                 MPI_Comm                           comm)
+    {
+      if (Utilities::MPI::n_mpi_processes(comm) == 1)
+        {
+          particles.save(archive);
+          return;
+        }
+      std::vector<double> buffer;
+      buffer.reserve(particles.size() * (1 + particles.n_packed()));
+      for (std::size_t i = 0; i < particles.size(); ++i)
+        pack_with_cell(particles, i, buffer);
+      const auto all = Utilities::MPI::gather(comm, buffer, 0);
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      Particles::ParticleSet<dim> global;
+      global.set_state_names(particles.get_state_names());
+      for (const auto &b : all)
+        unpack_with_cells(b, global);
+      global.save(archive);
+    }
+
+
+
+    template <int dim>
+    void
+    Checkpoint::scatter_particles(const Archive                   &archive,
+                                  const std::vector<unsigned int> &cell_owner,
+                                  Particles::ParticleSet<dim>     &particles,
+                                  MPI_Comm                         comm)
+    {
+      const unsigned int          rank = Utilities::MPI::this_mpi_process(comm);
+      Particles::ParticleSet<dim> all;
+      all.set_state_names(particles.get_state_names());
+      std::string error;
+      if (rank == 0)
+        try
+          {
+            all.load(archive);
+            for (const unsigned int c : all.cell)
+              AssertThrow(c < cell_owner.size(),
+                          ExcMessage("entry 'particles/cell' holds cell " +
+                                     std::to_string(c) + " of a mesh with " +
+                                     std::to_string(cell_owner.size()) +
+                                     " cells"));
+          }
+        catch (const ExceptionBase &e)
+          {
+            error = e.get_exc_name();
+            std::ostringstream s;
+            e.print_info(s);
+            error = Utilities::trim(s.str());
+          }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      AssertThrow(error.empty(), ExcMessage(error));
+
+      // A new set with the old state names: the material is the same.
+      Particles::ParticleSet<dim> mine;
+      mine.set_state_names(particles.get_state_names());
+      if (Utilities::MPI::n_mpi_processes(comm) == 1)
+        mine = std::move(all);
+      else
+        {
+          std::map<unsigned int, std::vector<double>> outgoing;
+          for (std::size_t i = 0; i < all.size(); ++i)
+            pack_with_cell(all, i, outgoing[cell_owner[all.cell[i]]]);
+          // Every rank receives from rank 0 only: the file's order.
+          const auto incoming = Utilities::MPI::some_to_some(comm, outgoing);
+          for (const auto &in : incoming)
+            unpack_with_cells(in.second, mine);
+        }
+      particles = std::move(mine);
+    }
+
+
+
+    template void
+    Checkpoint::gather_particles(const Particles::ParticleSet<1> &,
+                                 Archive &,
+                                 MPI_Comm);
+    template void
+    Checkpoint::gather_particles(const Particles::ParticleSet<2> &,
+                                 Archive &,
+                                 MPI_Comm);
+    template void
+    Checkpoint::scatter_particles(const Archive &,
+                                  const std::vector<unsigned int> &,
+                                  Particles::ParticleSet<1> &,
+                                  MPI_Comm);
+    template void
+    Checkpoint::scatter_particles(const Archive &,
+                                  const std::vector<unsigned int> &,
+                                  Particles::ParticleSet<2> &,
+                                  MPI_Comm);
+  } // namespace Simulator
+} // namespace psmpm
