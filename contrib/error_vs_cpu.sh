@@ -8,7 +8,7 @@
 #   meshes: error = |angular momentum change| and |angle / (pi/2) - 1|.
 # CPU = user + sys seconds (/usr/bin/time): robust to other load.
 # Writes runs.tsv and error_vs_cpu.png into the work directory (default a
-# new one under /tmp); copy the png into doc/figures/ by hand.
+# new one under /tmp); copy the png into doc/images/ by hand.
 #
 #   contrib/error_vs_cpu.sh [work dir] [max blocks through the depth]
 set -euo pipefail

@@ -692,6 +692,7 @@ namespace psmpm
       if (tracked)
         tracked->save(archive);
       writer->save(archive);
+      transfer->save(archive, state);
       // The same on every rank where a vertex is seen, 0 elsewhere.
       std::vector<double> history = state.grid->strategy().history();
       history.resize(Utilities::MPI::max(history.size(), comm), 0.);
@@ -820,6 +821,10 @@ namespace psmpm
           writer->load(shared);
           state.grid->strategy().restore_history(
             shared.get("mass_strategy/history"));
+          // The basis at the restored particles; a scheme with its own
+          // grid (OTM) evaluates it there in load().
+          state.evaluate_shape_functions();
+          transfer->load(shared, state);
 
           // References computed alongside the run (ULFEM, the cantilever)
           // are deterministic in the times they are advanced to.
@@ -843,7 +848,6 @@ namespace psmpm
                                  ": entry 'simulator/statistics' is damaged (" +
                                  e.what() + ")"));
         }
-      state.evaluate_shape_functions();
       resumed_from = file;
       resumed_step = state.step;
       checkpoint.start(state.step);

@@ -13,7 +13,8 @@
 // tracked particle, error norms every 3 steps and an output time interval;
 // (b) a neo-Hookean block slumping over empty cells with the automatic
 // time step, apic and the extrapolate mass strategy (whose hysteresis is
-// part of the checkpoint).
+// part of the checkpoint); (c) the 1D bar with the OTM scheme, whose moved
+// grid is part of the checkpoint.
 #include "../checkpoint_tests.h"
 
 namespace fs = std::filesystem;
@@ -143,4 +144,16 @@ main(int argc, char **argv)
                        "--set", "Transfer/Scheme=apic",
                        "--set", "Output/Interval=4",
                        "--set", "Checkpoint/Interval=5"});
+
+  // (c) OTM: the moved grid and the last nodal velocity are the scheme's
+  // own state (TransferScheme::save/load).
+  check(out,
+        "otm",
+        {std::string(PSMPM_SOURCE_DIR) + "/prm/otm_bar_1d.prm",
+         "--set",
+         "Time/End time=0.003",
+         "--set",
+         "Output/Interval=10",
+         "--set",
+         "Checkpoint/Interval=10"});
 }

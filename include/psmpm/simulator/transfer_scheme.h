@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <psmpm/base/archive.h>
 #include <psmpm/base/registry.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
@@ -42,6 +43,24 @@ namespace psmpm
       virtual void
       initialize(const State<dim> &state)
       {
+        (void)state;
+      }
+
+      /// What the scheme keeps from step to step beyond the particles
+      /// (OTM: the moved grid), into a checkpoint (collective; every rank
+      /// writes the same entries) ...
+      virtual void
+      save(Archive &archive, const State<dim> &state) const
+      {
+        (void)archive;
+        (void)state;
+      }
+
+      /// ... and back, after the particles have been restored.
+      virtual void
+      load(const Archive &archive, State<dim> &state)
+      {
+        (void)archive;
         (void)state;
       }
 

@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
 #include <psmpm/base/format.h>
 #include <psmpm/mesh/triangle_geometry.h>
 #include <psmpm/simulator/transfer_scheme.h>
@@ -320,6 +322,49 @@ namespace psmpm
               increments[p] = dt * L;
             }
           this->update_material(state, increments, volume_ratio, monitor);
+        }
+
+        /// The moved grid, the last nodal velocity and step, by global DoF
+        /// (a checkpoint written on some ranks resumes on others).
+        void
+        save(Archive &archive, const State<dim> &state) const override
+        {
+          const auto         &grid   = *state.grid;
+          const auto         &global = grid.relevant_global_indices();
+          const auto          n      = state.dof_handler.n_dofs();
+          std::vector<double> x(2 * dim * n, 0.), all(2 * dim * n);
+          for (unsigned int l = 0; l < global.size(); ++l)
+            if (grid.locally_owned_dofs().is_element(global[l]))
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  x[global[l] * 2 * dim + d]       = nodes[l][d];
+                  x[global[l] * 2 * dim + dim + d] = nodal_velocity[l][d];
+                }
+          Utilities::MPI::sum(x, state.comm, all);
+          archive.put("otm/grid", all, 2 * dim);
+          archive.put("otm/previous_dt", previous_dt);
+        }
+
+        void
+        load(const Archive &archive, State<dim> &state) override
+        {
+          const auto &global = state.grid->relevant_global_indices();
+          const auto &x =
+            archive.get("otm/grid", 2 * dim * state.dof_handler.n_dofs());
+          for (unsigned int l = 0; l < global.size(); ++l)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                nodes[l][d]          = x[global[l] * 2 * dim + d];
+                nodal_velocity[l][d] = x[global[l] * 2 * dim + dim + d];
+              }
+          moved       = nodes;
+          previous_dt = archive.get_number("otm/previous_dt");
+          // The particles (restored in their cells) on the moved grid.
+          TimerOutput timer(MPI_COMM_SELF,
+                            std::cout,
+                            TimerOutput::never,
+                            TimerOutput::wall_times);
+          evaluate_on_moved_grid(state, timer);
         }
 
         /// N_a,k+1 and grad N_a,k+1 at x_p,k+1 on the moved grid.
