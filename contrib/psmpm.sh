@@ -3,6 +3,8 @@
 #   contrib/psmpm.sh run [scene.prm] [psmpm options]   default scene if no file
 #   contrib/psmpm.sh test [ctest options]              the whole test suite
 #   contrib/psmpm.sh build                             only install and build
+#   contrib/psmpm.sh tools                             also ParaView (pvbatch) and
+#                                                      xvfb for contrib/render_*.py
 # Installs missing Debian packages first (needs root or sudo). The build
 # directory is $PSMPM_BUILD_DIR (default: build/ in the source tree).
 set -euo pipefail
@@ -12,8 +14,11 @@ build=${PSMPM_BUILD_DIR:-$root/build}
 mode=${1:-run}
 [ $# -gt 0 ] && shift
 
+# numpy, scipy and matplotlib: the contrib/ study scripts (Debian's
+# /usr/bin/python3).
 packages=(libdeal.ii-dev cmake g++ make ccache perl numdiff openmpi-bin
-          libbenchmark-dev)
+          libbenchmark-dev python3-numpy python3-scipy python3-matplotlib)
+[ "$mode" = tools ] && packages+=(python3-paraview paraview xvfb xauth)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" \
@@ -40,6 +45,6 @@ cmake --build "$build" --target psmpm -- -j2
 case "$mode" in
   run)   exec "$build/psmpm" "$@" ;;
   test)  cd "$build" && exec ctest -j2 --output-on-failure "$@" ;;
-  build) ;;
-  *)     echo "usage: $0 run|test|build" >&2; exit 2 ;;
+  build|tools) ;;
+  *)     echo "usage: $0 run|test|build|tools" >&2; exit 2 ;;
 esac

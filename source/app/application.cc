@@ -23,9 +23,27 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <sys/resource.h>
 
 namespace psmpm
 {
+  namespace
+  {
+    /// User + system CPU seconds of this process so far (getrusage): the
+    /// cost of a run that other load on the machine hardly changes, unlike
+    /// its wall time (summary.json `cpu_time_s`, rank 0's process).
+    double
+    process_cpu_seconds()
+    {
+      rusage usage;
+      getrusage(RUSAGE_SELF, &usage);
+      const auto seconds = [](const timeval &t) {
+        return t.tv_sec + 1e-6 * t.tv_usec;
+      };
+      return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+    }
+  } // namespace
+
   namespace App
   {
     using namespace dealii;
@@ -91,7 +109,8 @@ end
         "  --validate            check the input (parameters, mesh, time step), write nothing\n"
         "  --resume              continue from the newest checkpoint in the output\n"
         "                        directory (same scene; Time/End time may grow)\n"
-        "  --print-parameters    print all entries with defaults and documentation\n"
+        "  --print-parameters    print all entries with documentation: the\n"
+        "                        defaults, or with a scene (and --set) its values\n"
         "  --version             print the version\n"
         "  --help                this text\n"
         "Exit codes: 0 success, 1 internal error, 2 bad input; an unstable run\n"
@@ -427,7 +446,10 @@ end
                 std::cout << "psmpm " << version() << "\n";
               return success;
             }
-          if (cl.print_parameters)
+          // Without a scene: every entry with its default; with a scene
+          // (and --set): the scene's values, documentation included.
+          if (cl.print_parameters && cl.prm_file.empty() &&
+              cl.overrides.empty())
             {
               if (root)
                 prm.print_parameters(std::cout, ParameterHandler::PRM);
@@ -446,6 +468,12 @@ end
             }
           for (const auto &o : cl.overrides)
             apply_override(prm, o);
+          if (cl.print_parameters)
+            {
+              if (root)
+                prm.print_parameters(std::cout, ParameterHandler::PRM);
+              return success;
+            }
           resolve_mesh_file(prm, cl.prm_file);
           limits.parse_parameters(prm);
           dir = prm.get("Output directory");
@@ -566,6 +594,7 @@ end
         cl.prm_file.empty() ? "(default scene)" : cl.prm_file;
       const auto finish_summary = [&]() {
         summary.set("wall_time_s", wall.wall_time());
+        summary.set("cpu_time_s", process_cpu_seconds());
         summary.set("parameter_file", parameter_file);
         summary.set("version", version());
       };
@@ -655,6 +684,7 @@ end
                   failed.set("status", "failed");
                   failed.set("reason", e.what());
                   failed.set("wall_time_s", wall.wall_time());
+                  failed.set("cpu_time_s", process_cpu_seconds());
                   failed.set("parameter_file", parameter_file);
                   failed.set("version", version());
                   failed.write(dir + "/summary.json");
