@@ -53,6 +53,76 @@ namespace psmpm
 
     template <int dim>
     void
+    TransferScheme<dim>::particles_to_grid(State<dim>  &state,
+                                           TimerOutput &timer,
+                                           const double momentum_weight,
+                                           const double force_weight)
+    {
+      TimerOutput::Scope t(timer, "particle to grid");
+      auto              &grid = *state.grid;
+      grid.zero_cell_mass();
+      grid.zero_cell_rhs();
+      const auto        &particles  = state.particles;
+      const unsigned int n          = grid.dofs_per_cell;
+      auto              &cells      = grid.cell_arrays();
+      const bool         consistent = !cells.mass.empty();
+      double            *lumped     = cells.lumped.data();
+      double            *mass_mat   = cells.mass.data();
+      Tensor<1, dim>    *rhs        = cells.rhs.data();
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        {
+          const unsigned int             base = particles.cell[p] * n;
+          const double                   m    = particles.mass[p];
+          const SymmetricTensor<2, dim> &s    = particles.stress[p];
+          // Forces alone: no 0 * v term (which would carry a non-finite
+          // velocity into the forces).
+          const Tensor<1, dim> momentum =
+            momentum_weight != 0 ? momentum_weight * m * particles.velocity[p] :
+                                   Tensor<1, dim>();
+          const Tensor<1, dim>  external = force_weight * m * state.gravity;
+          const double          volume   = force_weight * particles.volume[p];
+          const double         *phi      = &state.shape_values[p * n];
+          const Tensor<1, dim> *grad     = &state.shape_gradients[p * n];
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              lumped[base + k] += m * phi[k];
+              rhs[base + k] +=
+                phi[k] * (momentum + external) - volume * (s * grad[k]);
+              if (consistent)
+                {
+                  double      *row = mass_mat + (base + k) * n;
+                  const double mk  = m * phi[k];
+                  for (unsigned int l = 0; l < n; ++l)
+                    row[l] += mk * phi[l];
+                }
+            }
+        }
+      grid.assemble_mass();
+    }
+
+    template <int dim>
+    void
+    TransferScheme<dim>::momentum_to_grid(State<dim> &state, TimerOutput &timer)
+    {
+      TimerOutput::Scope t(timer, "particle to grid");
+      auto              &grid = *state.grid;
+      grid.zero_cell_rhs();
+      const auto        &particles = state.particles;
+      const unsigned int n         = grid.dofs_per_cell;
+      Tensor<1, dim>    *rhs       = grid.cell_arrays().rhs.data();
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        {
+          const unsigned int   base = particles.cell[p] * n;
+          const double        *phi  = &state.shape_values[p * n];
+          const Tensor<1, dim> momentum =
+            particles.mass[p] * particles.velocity[p];
+          for (unsigned int k = 0; k < n; ++k)
+            rhs[base + k] += phi[k] * momentum;
+        }
+    }
+
+    template <int dim>
+    void
     TransferScheme<dim>::update_material(
       State<dim>                        &state,
       const std::vector<Tensor<2, dim>> &increments,

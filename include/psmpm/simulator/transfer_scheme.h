@@ -90,6 +90,23 @@ namespace psmpm
             StabilityMonitor            &monitor,
             TimerOutput                 &timer);
 
+      /// Particle mass into the cell matrices (lumped and, for matrix
+      /// strategies, consistent; then the strategy: assemble_mass) and the
+      /// cell right-hand sides momentum_weight sum_p m_p v_p N_i +
+      /// force_weight f_i, f_i = sum_p (m_p g N_i - V_p sigma_p grad N_i).
+      /// MUSL and USL take the forces alone (0, 1); OTM's combined update
+      /// both (1, its mean step).
+      static void
+      particles_to_grid(State<dim>  &state,
+                        TimerOutput &timer,
+                        const double momentum_weight,
+                        const double force_weight);
+
+      /// Cell right-hand sides sum_p m_p v_p N_i (the mass matrix of the
+      /// step already assembled).
+      static void
+      momentum_to_grid(State<dim> &state, TimerOutput &timer);
+
       /// The material update of all particles from their increments
       /// dt grad v, then volumes and densities; a non-positive volume is
       /// reported. @p volume_ratio is scratch of any size.

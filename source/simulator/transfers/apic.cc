@@ -119,7 +119,7 @@ namespace psmpm
           {
             TimerOutput::Scope t(timer, "particle to grid");
             mass_to_grid(state);
-            momentum_to_grid(state);
+            affine_momentum_to_grid(state);
           }
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
@@ -131,7 +131,7 @@ namespace psmpm
           velocities_to_particles(state, timer);
           {
             TimerOutput::Scope t(timer, "particle to grid");
-            momentum_to_grid(state);
+            affine_momentum_to_grid(state);
           }
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
@@ -207,7 +207,7 @@ namespace psmpm
         /// The grid momentum of the particles' affine fields into the cell
         /// right-hand sides (see the class documentation).
         void
-        momentum_to_grid(State<dim> &state)
+        affine_momentum_to_grid(State<dim> &state)
         {
           auto &grid = *state.grid;
           grid.zero_cell_rhs();

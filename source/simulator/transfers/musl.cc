@@ -29,7 +29,7 @@ namespace psmpm
              StabilityMonitor &monitor,
              TimerOutput      &timer) override
         {
-          particles_to_grid(state, timer);
+          this->particles_to_grid(state, timer, 0., 1.);
           if (!this->solve(state, state.grid_acceleration, monitor, timer))
             return false;
           update_particle_velocities(state, timer);
@@ -40,45 +40,6 @@ namespace psmpm
         }
 
       private:
-        static void
-        particles_to_grid(State<dim> &state, TimerOutput &timer)
-        {
-          TimerOutput::Scope t(timer, "particle to grid");
-          auto              &grid = *state.grid;
-          grid.zero_cell_mass();
-          grid.zero_cell_rhs();
-          const auto        &particles  = state.particles;
-          const unsigned int n          = grid.dofs_per_cell;
-          auto              &cells      = grid.cell_arrays();
-          const bool         consistent = !cells.mass.empty();
-          double            *lumped     = cells.lumped.data();
-          double            *mass_mat   = cells.mass.data();
-          Tensor<1, dim>    *rhs        = cells.rhs.data();
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int             base     = particles.cell[p] * n;
-              const double                   m        = particles.mass[p];
-              const double                   V        = particles.volume[p];
-              const SymmetricTensor<2, dim> &s        = particles.stress[p];
-              const Tensor<1, dim>           external = m * state.gravity;
-              const double                  *phi = &state.shape_values[p * n];
-              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  lumped[base + k] += m * phi[k];
-                  rhs[base + k] += phi[k] * external - V * (s * grad[k]);
-                  if (consistent)
-                    {
-                      double      *row = mass_mat + (base + k) * n;
-                      const double mk  = m * phi[k];
-                      for (unsigned int l = 0; l < n; ++l)
-                        row[l] += mk * phi[l];
-                    }
-                }
-            }
-          grid.assemble_mass();
-        }
-
         static void
         update_particle_velocities(State<dim> &state, TimerOutput &timer)
         {

@@ -123,10 +123,10 @@ namespace psmpm
           const double dt_mean = previous_dt > 0 ? (previous_dt + dt) / 2 : dt;
           if (split)
             {
-              particles_to_grid(state, timer, 0., 1.);
+              this->particles_to_grid(state, timer, 0., 1.);
               if (!this->solve(state, state.grid_acceleration, monitor, timer))
                 return false;
-              momentum_to_grid(state, timer);
+              this->momentum_to_grid(state, timer);
               if (!this->solve(state, state.grid_velocity, monitor, timer))
                 return false;
               for (unsigned int i = 0; i < state.grid_velocity.size(); ++i)
@@ -134,7 +134,7 @@ namespace psmpm
             }
           else
             {
-              particles_to_grid(state, timer, 1., dt_mean);
+              this->particles_to_grid(state, timer, 1., dt_mean);
               if (!this->solve(state, state.grid_velocity, monitor, timer))
                 return false;
               // The nodes' own acceleration: the central difference of
@@ -176,75 +176,6 @@ namespace psmpm
           for (unsigned int k = 0; k <= dim; ++k)
             v[k] = x[dofs[k]];
           return v;
-        }
-
-        /// Mass matrix and right-hand side momentum_weight * l + force_weight
-        /// * f on the current grid.
-        static void
-        particles_to_grid(State<dim>  &state,
-                          TimerOutput &timer,
-                          const double momentum_weight,
-                          const double force_weight)
-        {
-          TimerOutput::Scope t(timer, "particle to grid");
-          auto              &grid = *state.grid;
-          grid.zero_cell_mass();
-          grid.zero_cell_rhs();
-          const auto        &particles  = state.particles;
-          const unsigned int n          = grid.dofs_per_cell;
-          auto              &cells      = grid.cell_arrays();
-          const bool         consistent = !cells.mass.empty();
-          double            *lumped     = cells.lumped.data();
-          double            *mass_mat   = cells.mass.data();
-          Tensor<1, dim>    *rhs        = cells.rhs.data();
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int             base = particles.cell[p] * n;
-              const double                   m    = particles.mass[p];
-              const double                   V    = particles.volume[p];
-              const SymmetricTensor<2, dim> &s    = particles.stress[p];
-              const Tensor<1, dim>           momentum =
-                momentum_weight * m * particles.velocity[p];
-              const Tensor<1, dim>  external = force_weight * m * state.gravity;
-              const double          weighted_volume = force_weight * V;
-              const double         *phi  = &state.shape_values[p * n];
-              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  lumped[base + k] += m * phi[k];
-                  rhs[base + k] += phi[k] * (momentum + external) -
-                                   weighted_volume * (s * grad[k]);
-                  if (consistent)
-                    {
-                      double      *row = mass_mat + (base + k) * n;
-                      const double mk  = m * phi[k];
-                      for (unsigned int l = 0; l < n; ++l)
-                        row[l] += mk * phi[l];
-                    }
-                }
-            }
-          grid.assemble_mass();
-        }
-
-        /// Right-hand side l = sum_p m_p v_p N_a (mass already assembled).
-        static void
-        momentum_to_grid(State<dim> &state, TimerOutput &timer)
-        {
-          TimerOutput::Scope t(timer, "particle to grid");
-          auto              &grid = *state.grid;
-          grid.zero_cell_rhs();
-          const auto        &particles = state.particles;
-          const unsigned int n         = grid.dofs_per_cell;
-          Tensor<1, dim>    *rhs       = grid.cell_arrays().rhs.data();
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int   base = particles.cell[p] * n;
-              const double        *phi  = &state.shape_values[p * n];
-              const Tensor<1, dim> momentum =
-                particles.mass[p] * particles.velocity[p];
-              for (unsigned int k = 0; k < n; ++k)
-                rhs[base + k] += phi[k] * momentum;
-            }
         }
 
         /// x_a,k+1 = x_a,k + dt u_a; false (and nothing moved) if a cell
