@@ -12,6 +12,10 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/vector.h>
 
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
+
 #include <psmpm/base/format.h>
 #include <psmpm/solver/grid_system.h>
 
@@ -143,6 +147,7 @@ namespace psmpm
           c.close();
           active_constraints[d].clear();
           active_constraints[d].copy_from(c);
+          update_constraint_flags(d);
         }
 
       lumped.reinit(owned, comm);
@@ -251,6 +256,73 @@ namespace psmpm
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       for (unsigned int d = 0; d < dim; ++d)
         matrix[d].reinit(owned, owned, dsp, comm);
+      compute_matrix_slots();
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::update_constraint_flags(const unsigned int d)
+    {
+      const auto &c = active_constraints[d];
+      constrained[d].assign(relevant_global.size(), 0);
+      only_dirichlet[d] = true;
+      for (unsigned int l = 0; l < relevant_global.size(); ++l)
+        if (c.is_constrained(relevant_global[l]))
+          {
+            constrained[d][l] = 1;
+            const auto *entries = c.get_constraint_entries(relevant_global[l]);
+            only_dirichlet[d] = only_dirichlet[d] &&
+                                (entries == nullptr || entries->empty()) &&
+                                c.get_inhomogeneity(relevant_global[l]) == 0;
+          }
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::compute_matrix_slots()
+    {
+      // All components share the sparsity pattern, hence (Epetra stores a
+      // FillComplete'd matrix in one CRS array with sorted columns) the
+      // positions of the entries.
+      const Epetra_CrsMatrix &A = matrix[0].trilinos_matrix();
+      int                    *offsets, *columns;
+      double                 *values;
+      cell_slots.clear();
+      if (A.ExtractCrsDataPointers(offsets, columns, values) != 0)
+        return;
+      for (int r = 0; r < A.NumMyRows(); ++r)
+        if (!std::is_sorted(columns + offsets[r], columns + offsets[r + 1]))
+          return;
+      matrix_row.resize(relevant_global.size());
+      matrix_column.resize(relevant_global.size());
+      for (unsigned int l = 0; l < relevant_global.size(); ++l)
+        {
+          const auto g     = relevant_global[l];
+          matrix_row[l]    = owned.is_element(g) ? A.RowMap().LID(
+                                                  static_cast<int>(g)) :
+                                                   -1;
+          matrix_column[l] = A.ColMap().LID(static_cast<int>(g));
+        }
+      const unsigned int n = dofs_per_cell;
+      cell_slots.assign(owned_cell_indices.size() * n * n, -1);
+      for (unsigned int o = 0; o < owned_cell_indices.size(); ++o)
+        {
+          const unsigned int *dofs =
+            &cell_dof_indices[owned_cell_indices[o] * n];
+          for (unsigned int k = 0; k < n; ++k)
+            if (const int r = matrix_row[dofs[k]]; r >= 0)
+              for (unsigned int l = 0; l < n; ++l)
+                {
+                  const int *begin = columns + offsets[r];
+                  const int *end   = columns + offsets[r + 1];
+                  const int *p =
+                    std::lower_bound(begin, end, matrix_column[dofs[l]]);
+                  AssertThrow(p != end && *p == matrix_column[dofs[l]],
+                              ExcInternalError());
+                  cell_slots[(o * n + k) * n + l] =
+                    static_cast<int>(p - columns);
+                }
+        }
     }
 
     namespace
@@ -448,12 +520,65 @@ namespace psmpm
 
     template <int dim>
     void
-    GridSystem<dim>::assemble_matrix(const unsigned int d)
+    GridSystem<dim>::add_block(const unsigned int  d,
+                               const unsigned int *dofs,
+                               const unsigned int  n,
+                               const double       *values,
+                               const int          *slots)
+    {
+      Epetra_CrsMatrix &A = const_cast<Epetra_CrsMatrix &>(
+        matrix[d].trilinos_matrix());
+      int    *offsets, *columns;
+      double *entries;
+      A.ExtractCrsDataPointers(offsets, columns, entries);
+      const char *fixed = constrained[d].data();
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const unsigned int row = dofs[k];
+          if (fixed[row])
+            continue;
+          const int r = matrix_row[row];
+          for (unsigned int l = 0; l < n; ++l)
+            {
+              const double v = values[k * n + l];
+              if (fixed[dofs[l]] || v == 0)
+                continue;
+              if (r < 0) // another rank's row: through Trilinos
+                matrix[d].add(relevant_global[row], relevant_global[dofs[l]], v);
+              else if (slots != nullptr)
+                entries[slots[k * n + l]] += v;
+              else
+                {
+                  const int *p = std::lower_bound(columns + offsets[r],
+                                                  columns + offsets[r + 1],
+                                                  matrix_column[dofs[l]]);
+                  entries[p - columns] += v;
+                }
+            }
+        }
+      // What distribute_local_to_global puts on the diagonal of a fixed
+      // DoF (keeps the matrix invertible and of the right scale).
+      double average = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        average += std::abs(values[k * n + k]);
+      average /= n;
+      for (unsigned int k = 0; k < n; ++k)
+        if (fixed[dofs[k]])
+          {
+            const double v = values[k * n + k] != 0 ?
+                               std::abs(values[k * n + k]) :
+                               average;
+            matrix[d].add(relevant_global[dofs[k]], relevant_global[dofs[k]], v);
+          }
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::assemble_matrix_with_constraints(const unsigned int d)
     {
       const unsigned int                   n = dofs_per_cell;
       FullMatrix<double>                   local(n, n);
       std::vector<types::global_dof_index> dofs(n);
-      matrix[d] = 0;
       for (const unsigned int c : owned_cell_indices)
         {
           for (unsigned int k = 0; k < n; ++k)
@@ -475,6 +600,38 @@ namespace psmpm
                                                            patch_dofs,
                                                            matrix[d]);
         }
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::assemble_matrix(const unsigned int d)
+    {
+      matrix[d] = 0;
+      if (only_dirichlet[d] && !cell_slots.empty())
+        {
+          // Straight into the value array: the per-cell work of
+          // distribute_local_to_global (sorting, map look-ups, a search per
+          // entry) cost more than the particle loops on small and
+          // medium systems. Same sums in the same order: bit-identical.
+          const unsigned int n = dofs_per_cell;
+          for (unsigned int o = 0; o < owned_cell_indices.size(); ++o)
+            {
+              const unsigned int c = owned_cell_indices[o];
+              add_block(d,
+                        &cell_dof_indices[c * n],
+                        n,
+                        &cells.mass[c * n * n],
+                        &cell_slots[o * n * n]);
+            }
+          for (const auto &patch : patches)
+            add_block(d,
+                      patch.dofs.data(),
+                      patch.dofs.size(),
+                      &patch.matrix(0, 0),
+                      nullptr);
+        }
+      else
+        assemble_matrix_with_constraints(d);
       matrix[d].compress(VectorOperation::add);
       // A DoF whose support holds no particle has an empty row: give it
       // a unit diagonal so that its (zero) coefficient is well defined.
@@ -496,24 +653,37 @@ namespace psmpm
     GridSystem<dim>::solve_consistent(const unsigned int             d,
                                       TrilinosWrappers::MPI::Vector &x)
     {
-      const unsigned int n = dofs_per_cell;
-      writable             = 0;
-      Vector<double>                       local_rhs(n);
-      std::vector<types::global_dof_index> dofs(n);
-      for (const unsigned int c : owned_cell_indices)
-        {
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              dofs[k]      = relevant_global[cell_dof_indices[c * n + k]];
-              local_rhs[k] = cells.rhs[c * n + k][d];
-            }
-          active_constraints[d].distribute_local_to_global(local_rhs,
-                                                           dofs,
-                                                           writable);
-        }
-      writable.compress(VectorOperation::add);
       TrilinosWrappers::MPI::Vector rhs(owned, comm);
-      rhs               = writable;
+      if (only_dirichlet[d])
+        {
+          // Tensor<1,dim> stores its components contiguously.
+          scatter(&cells.rhs[0][0], dim, d, writable);
+          rhs = writable;
+          for (const auto i : owned)
+            if (constrained[d][relevant.index_within_set(i)])
+              rhs[i] = 0;
+          rhs.compress(VectorOperation::insert);
+        }
+      else
+        {
+          const unsigned int n = dofs_per_cell;
+          writable             = 0;
+          Vector<double>                       local_rhs(n);
+          std::vector<types::global_dof_index> dofs(n);
+          for (const unsigned int c : owned_cell_indices)
+            {
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  dofs[k]      = relevant_global[cell_dof_indices[c * n + k]];
+                  local_rhs[k] = cells.rhs[c * n + k][d];
+                }
+              active_constraints[d].distribute_local_to_global(local_rhs,
+                                                               dofs,
+                                                               writable);
+            }
+          writable.compress(VectorOperation::add);
+          rhs = writable;
+        }
       x                 = 0;
       const double norm = rhs.l2_norm();
       if (norm == 0)

@@ -226,6 +226,7 @@ namespace psmpm
       {
         active_constraints[d].clear();
         active_constraints[d].copy_from(c);
+        update_constraint_flags(d);
       }
       /// The assembled mass matrix of component d (matrix strategies,
       /// after assemble_mass; rows of DoFs without particle mass carry a
@@ -294,6 +295,27 @@ namespace psmpm
       particle_diagonal();
       void
       assemble_matrix(const unsigned int d);
+      /// Per-cell AffineConstraints::distribute_local_to_global, for
+      /// constraints that tie DoFs to others (extrapolate).
+      void
+      assemble_matrix_with_constraints(const unsigned int d);
+      /// Positions of the cell blocks' entries in the matrices' value
+      /// arrays, after every change of the sparsity.
+      void
+      compute_matrix_slots();
+      /// Add the dense block @p values (row-major, n x n) over the local
+      /// relevant DoFs @p dofs to matrix d, as distribute_local_to_global
+      /// with homogeneous Dirichlet constraints does, through the value
+      /// array (cell blocks with their precomputed @p slots, other blocks
+      /// by a search of the row).
+      void
+      add_block(const unsigned int   d,
+                const unsigned int  *dofs,
+                const unsigned int   n,
+                const double        *values,
+                const int           *slots);
+      void
+      update_constraint_flags(const unsigned int d);
       unsigned int
       solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
 
@@ -312,6 +334,17 @@ namespace psmpm
       std::array<AffineConstraints<double>, dim>            dirichlet;
       std::array<AffineConstraints<double>, dim>            active_constraints;
       std::array<TrilinosWrappers::SparseMatrix, dim>       matrix;
+      /// Direct assembly (assemble_matrix): for component d, whether every
+      /// constraint fixes its DoF to zero (Dirichlet only), which DoFs are
+      /// constrained (local relevant numbering), the matrix row and column
+      /// of a local relevant DoF (-1: row not owned), and per owned cell
+      /// (in owned_cell_indices order) the value-array position of each
+      /// entry (k, l) of its block (-1: row not owned).
+      std::array<bool, dim>                                 only_dirichlet{};
+      std::array<std::vector<char>, dim>                    constrained;
+      std::vector<int>                                      matrix_row;
+      std::vector<int>                                      matrix_column;
+      std::vector<int>                                      cell_slots;
       std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
       std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
       TrilinosWrappers::MPI::Vector                         lumped; // owned
