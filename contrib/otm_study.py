@@ -3,7 +3,7 @@
 
     /usr/bin/python3 contrib/otm_study.py [--exe build/psmpm] [--work DIR]
                                           [definitions] [crossing] [cost]
-                                          [2d]
+                                          [2d] [mass]
 
 Every number comes from psmpm runs of prm/otm_bar_1d.prm (particle VTU
 output, summary.json, /usr/bin/time); the script only evaluates them:
@@ -18,7 +18,10 @@ crossing     stress error over one period (grid crossing from t ~ 4 ms):
              doc/otm_crossing.png, doc/otm_profile.png
 cost         error against CPU time, 10 to 160 elements, t = 0.1 and 0.45;
              doc/otm_cost.png
-2d           otm on 2D scenes (thesis bar, slumping block with P1)
+2d           otm on 2D scenes (thesis bar, slumping block with P1, the
+             tangling block with the automatic step)
+mass         otm with each mass strategy that reads cell geometry, on the
+             slumping block cut through cells
 
 Needs python3-numpy and python3-matplotlib (Debian).
 """
@@ -320,11 +323,13 @@ def two_d(exe, work):
          'spreading_block.prm', ['Basis/Type=linear',
                                  'Mass matrix/Type=partially lumped',
                                  'Output/Interval=0']),
+        ('tangling block, automatic step (otm_tangling.prm)',
+         'otm_tangling.prm', ['Time/Time step=0']),
     ]
     print('\n### 2D scenes\n')
-    print('| scene | scheme | status | steps | displacement L2 | '
-          'reason | CPU s |')
-    print('|---|---|---|---|---|---|---|')
+    print('| scene | scheme | status | steps | dt min | dt max | '
+          'displacement L2 | reason | CPU s |')
+    print('|---|---|---|---|---|---|---|---|---|')
     for name, prm, sets in cases:
         for scheme in ['otm', 'usl', 'musl']:
             d = os.path.join(work, '2d-' + scheme)
@@ -336,12 +341,82 @@ def two_d(exe, work):
             p = subprocess.run(args, capture_output=True, text=True)
             s = json.load(open(os.path.join(d, 'summary.json')))
             u, y = re.search(r'CPU ([\d.]+) ([\d.]+)', p.stderr).groups()
-            print('| %s | %s | %s | %d | %s | %s | %.1f |' % (
+            print('| %s | %s | %s | %d | %.3g | %.3g | %s | %s | %.1f |' % (
                 name, scheme, s['status'], s['steps'],
+                s['time_step_min'], s['time_step_max'],
                 '%.3e' % s['errors']['displacement_L2']
                 if 'errors' in s else '-',
                 s.get('reason', '').replace('|', '/')[:90],
                 float(u) + float(y)))
+
+
+# --------------------------------------------------------------------------
+def statistics_columns(path):
+    """name -> list of values of statistics.txt (deal.II TableHandler)."""
+    names, rows = [], []
+    for line in open(path):
+        if line.startswith('#'):
+            names.append(line.split(':', 1)[1].strip() if ':' in line
+                         else line[1:].strip())
+        elif line.strip():
+            rows.append(line.split())
+    return {n: [r[i] for r in rows] for i, n in enumerate(names)}
+
+
+def mass(exe, work):
+    """otm with each mass strategy on the P1 slumping block cut through
+    cells (Region 0.9 x 0.9: partly filled cells): whether what the
+    strategies read of the initial cells stays constant, and how far the
+    moved cells' areas (hence a fill measured on them) drift."""
+    print('\n### Mass strategies with otm (slumping block, region 0.9 x '
+          '0.9)\n')
+    print('| Mass matrix/Type | status | steps | treated_dofs (distinct '
+          'values) | min_relative_diagonal (min, max) | moved area / '
+          'initial, occupied cells (min, max) | fill on moved cells '
+          '(min, max over partly filled) |')
+    print('|---|---|---|---|---|---|---|')
+    for t in ['consistent', 'lumped', 'partially lumped', 'blended lumping',
+              'fictitious mass', 'extrapolate']:
+        d = os.path.join(work, 'mass-' + t.replace(' ', '_'))
+        args = [exe, os.path.join(ROOT, 'prm', 'spreading_block.prm'),
+                '--set', 'Output directory=' + d,
+                '--set', 'Transfer/Scheme=otm',
+                '--set', 'Basis/Type=linear',
+                '--set', 'Mass matrix/Type=' + t,
+                '--set', 'Particles/Region=0, 0, 0.9, 0.9',
+                '--set', 'Output/Subdivisions=1',
+                '--set', 'Output/Interval=1000000']
+        subprocess.run(args, capture_output=True, text=True)
+        s = json.load(open(os.path.join(d, 'summary.json')))
+        c = statistics_columns(os.path.join(d, 'statistics.txt'))
+        treated = sorted(set(int(float(v)) for v in c['treated_dofs'][1:]))
+        rel = [float(v) for v in c['min_relative_diagonal'][1:]]
+        last = max(int(f[5:10]) for f in os.listdir(d)
+                   if f.startswith('grid-') and f.endswith('.000.vtu'))
+        g = vtu_arrays(os.path.join(d, 'grid-%05d.000.vtu' % last))
+        x = g['Points'][:, :2].reshape(-1, 3, 2)
+        x0 = x - g['grid_displacement'][:, :2].reshape(-1, 3, 2)
+
+        def area(v):
+            return 0.5 * ((v[:, 1, 0] - v[:, 0, 0]) * (v[:, 2, 1] - v[:, 0, 1])
+                          - (v[:, 2, 0] - v[:, 0, 0]) *
+                          (v[:, 1, 1] - v[:, 0, 1]))
+        p = vtu_arrays(os.path.join(d, 'particles-%05d.000.vtu' % last))
+        cells = p['cell'].astype(int)
+        m = np.bincount(cells, weights=p['mass'], minlength=len(x))
+        occ = m > 0
+        ratio = area(x)[occ] / area(x0)[occ]
+        fill0 = m / (1000 * area(x0))
+        fill = m / (1000 * area(x))
+        part = occ & (fill0 < 1 - 1e-9)
+        print('| %s | %s | %d | %s | %.4g, %.4g | %.3f, %.3f | %.3f, %.3f '
+              '(initial cells %.3f, %.3f) |' % (
+                  t, s['status'], s['steps'],
+                  ', '.join(map(str, treated[:4])) +
+                  (' ...' if len(treated) > 4 else ''),
+                  min(rel), max(rel), ratio.min(), ratio.max(),
+                  fill[part].min(), fill[part].max(),
+                  fill0[part].min(), fill0[part].max()))
 
 
 def main():
@@ -357,10 +432,10 @@ def main():
         work = args[i + 1]
         del args[i:i + 2]
     os.makedirs(work, exist_ok=True)
-    parts = args or ['definitions', 'crossing', 'cost', '2d']
+    parts = args or ['definitions', 'crossing', 'cost', '2d', 'mass']
     for part in parts:
         {'definitions': definitions, 'crossing': crossing, 'cost': cost,
-         '2d': two_d}[part](exe, work)
+         '2d': two_d, 'mass': mass}[part](exe, work)
 
 
 if __name__ == '__main__':

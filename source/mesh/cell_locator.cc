@@ -15,24 +15,6 @@ namespace psmpm
   {
     namespace
     {
-      /// Height of the triangle over the edge opposite vertex k.
-      double
-      height(const std::array<Point<2>, 3> &v,
-             const unsigned int             k,
-             const double                   area)
-      {
-        return 2 * area / v[(k + 1) % 3].distance(v[(k + 2) % 3]);
-      }
-
-      /// A line's "height" over either end is its length.
-      double
-      height(const std::array<Point<1>, 2> &,
-             const unsigned int,
-             const double length)
-      {
-        return length;
-      }
-
       template <int dim>
       std::string
       orientation_error(const unsigned int cell)
@@ -80,10 +62,10 @@ namespace psmpm
             v[k] = cell->vertex(k);
           const double measure = signed_measure(v);
           AssertThrow(measure > 0, ExcMessage(orientation_error<dim>(c)));
-          maps[c] = barycentric_map(v);
+          maps[c]    = barycentric_map(v);
+          min_height = std::min(min_height, Mesh::minimum_height(v));
           for (unsigned int k = 0; k <= dim; ++k)
             {
-              min_height = std::min(min_height, height(v, k, measure));
               std::array<unsigned int, dim> key;
               for (unsigned int j = 0; j < dim; ++j)
                 key[j] = cell->vertex_index((k + 1 + j) % (dim + 1));

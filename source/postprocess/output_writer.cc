@@ -381,10 +381,19 @@ namespace psmpm
         std::pair<std::string, const std::vector<Tensor<1, dim>> *>>
         &vector_fields,
       const std::vector<std::pair<std::string, const std::vector<double> *>>
-        &scalar_fields)
+                                    &scalar_fields,
+      const std::vector<Point<dim>> *moved_vertices)
     {
+      const unsigned int n = space.dofs_per_cell();
+      AssertThrow(moved_vertices == nullptr || n == dim + 1,
+                  ExcMessage("psmpm: a moved grid is drawn for P1 (one "
+                             "function per vertex) only."));
       std::vector<std::string> names;
       Ranges                   ranges;
+      // A moved grid also shows how far it moved (ParaView can colour by
+      // it; the points are already at the moved positions).
+      if (moved_vertices)
+        add_vector<dim>("grid_displacement", names, ranges);
       for (const auto &f : vector_fields)
         add_vector<dim>(f.first, names, ranges);
       for (const auto &f : scalar_fields)
@@ -395,7 +404,6 @@ namespace psmpm
       const double rank = Utilities::MPI::this_mpi_process(comm);
 
       const unsigned int                             s = subdivisions;
-      const unsigned int                             n = space.dofs_per_cell();
       const std::vector<std::array<unsigned int, 3>> triangles =
         (dim == 2 ? sub_triangles(s) :
                     std::vector<std::array<unsigned int, 3>>());
@@ -416,6 +424,15 @@ namespace psmpm
               v[i] = cell->vertex(i);
             const std::vector<Point<dim>> points   = lattice_points<dim>(v, s);
             const unsigned int            n_points = points.size();
+            // On a moved grid the cell is affinely mapped: the lattice
+            // point of the same barycentric coordinates carries the same
+            // values, drawn at its moved position.
+            std::array<Point<dim>, dim + 1> w = v;
+            if (moved_vertices)
+              for (unsigned int i = 0; i <= dim; ++i)
+                w[i] = (*moved_vertices)[cell_dofs[c * n + i]];
+            const std::vector<Point<dim>> drawn =
+              moved_vertices ? lattice_points<dim>(w, s) : points;
 
             // One batched (virtual) evaluation per cell.
             cells.assign(n_points, c);
@@ -431,6 +448,9 @@ namespace psmpm
               {
                 const double *phi = values.data() + q * n;
                 double       *row = data.data() + q * names.size();
+                if (moved_vertices)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    *row++ = drawn[q][d] - points[q][d];
                 for (const auto &f : vector_fields)
                   {
                     Tensor<1, dim> u;
@@ -463,8 +483,8 @@ namespace psmpm
                 patch.reference_cell = ReferenceCells::get_hypercube<dim>();
                 patch.n_subdivisions = s;
                 patch.patch_index    = patches.size();
-                patch.vertices[0]    = v[0];
-                patch.vertices[1]    = v[1];
+                patch.vertices[0]    = w[0];
+                patch.vertices[1]    = w[1];
                 patch.data.reinit(names.size(), n_points);
                 for (unsigned int q = 0; q < n_points; ++q)
                   fill(patch, q, q);
@@ -483,7 +503,7 @@ namespace psmpm
                   patch.data.reinit(names.size(), 3);
                   for (unsigned int k = 0; k < 3; ++k)
                     {
-                      patch.vertices[k] = points[t[k]];
+                      patch.vertices[k] = drawn[t[k]];
                       fill(patch, k, t[k]);
                     }
                   patches.push_back(std::move(patch));

@@ -388,7 +388,11 @@ namespace psmpm
     double
     Simulator<dim>::next_time_step()
     {
-      time_step_control.update(state);
+      const bool warned = !time_step_control.grid_warning().empty();
+      time_step_control.update(state, transfer->minimum_height(state));
+      if (!warned && !time_step_control.grid_warning().empty() && !quiet)
+        pcout << "psmpm: warning: " << time_step_control.grid_warning()
+              << std::endl;
       return time_step_control.next(state.time);
     }
 
@@ -461,7 +465,8 @@ namespace psmpm
                          state.grid->cell_dofs(),
                          {{"velocity", &state.grid_velocity},
                           {"acceleration", &state.grid_acceleration}},
-                         {{"mass", &state.grid->lumped_mass()}});
+                         {{"mass", &state.grid->lumped_mass()}},
+                         transfer->moved_vertices());
       write_statistics();
       if (tracked)
         tracked->write(output_directory, comm);
@@ -890,8 +895,14 @@ namespace psmpm
           summary.set("resumed_from", resumed_from);
           summary.set_integer("resumed_step", resumed_step);
         }
-      if (!time_step_control.warning().empty())
-        summary.set("warning", time_step_control.warning());
+      {
+        std::string warning = time_step_control.warning();
+        if (!time_step_control.grid_warning().empty())
+          warning +=
+            (warning.empty() ? "" : " ") + time_step_control.grid_warning();
+        if (!warning.empty())
+          summary.set("warning", warning);
+      }
       summary.set_integer("dimension", dim);
       summary.set_integer("n_dofs", state.dof_handler.n_dofs());
       summary.set_integer("n_cells", state.triangulation.n_active_cells());

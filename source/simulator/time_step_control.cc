@@ -30,14 +30,16 @@ namespace psmpm
         "0.5",
         Patterns::Double(0),
         "dt = C f h_min / c_p for the automatic time step (c_p: p-wave "
-        "speed, h_min: smallest triangle height, f: measured stability "
-        "factor of the basis and mass matrix, 0.4 to 1.5, doc/stability.md).");
+        "speed, h_min: smallest triangle height, of the moved cells with "
+        "Transfer/Scheme = otm, f: measured stability factor of the basis "
+        "and mass matrix, 0.4 to 1.5, doc/stability.md).");
       prm.declare_entry(
         "Check stability bound",
         "true",
         Patterns::Bool(),
         "Reject a fixed Time step above h_min/c_p and a Courant "
-        "number above 1 before the run. Switch off only to "
+        "number above 1 before the run (and warn if the moving grid of "
+        "Transfer/Scheme = otm compresses below it). Switch off only to "
         "measure stability limits (contrib/stability_study.py).");
       prm.leave_subsection();
     }
@@ -77,9 +79,10 @@ namespace psmpm
           time_step = fixed_step;
         }
       else
-        update(state);
+        update(state, h_min);
       min_time_step = max_time_step = time_step;
       time_step_warning.clear();
+      moving_grid_warning.clear();
       if (time_step > factor * bound)
         time_step_warning =
           "Time/Time step = " + prm_value(time_step) +
@@ -91,10 +94,27 @@ namespace psmpm
 
     template <int dim>
     void
-    TimeStepControl::update(const State<dim> &state)
+    TimeStepControl::update(const State<dim> &state, const double grid_h_min)
     {
       if (!is_automatic())
-        return;
+        {
+          // A fixed step was checked against the initial grid; a grid
+          // that moves with the material (OTM) can compress below it.
+          // Not an error (the run may still be stable, and the monitors
+          // stop it if not), but said once, in the log and summary.json.
+          const double c_p = state.material->p_wave_speed();
+          if (check_time_step && moving_grid_warning.empty() &&
+              fixed_step > grid_h_min / c_p)
+            moving_grid_warning =
+              "Time/Time step = " + prm_value(fixed_step) +
+              " exceeds the stability bound h_min/c_p = " +
+              prm_value(grid_h_min / c_p) + " of the moving grid at step " +
+              std::to_string(state.step) + " (t = " + prm_value(state.time) +
+              ", h_min = " + prm_value(grid_h_min) + ", initially " +
+              prm_value(h_min) +
+              "); use Time/Time step = 0 for a step that follows the grid.";
+          return;
+        }
       const auto &particles = state.particles;
       double      speed     = 0;
       for (std::size_t p = 0; p < particles.size(); ++p)
@@ -106,7 +126,7 @@ namespace psmpm
         Utilities::MPI::max(std::max(c, state.material->p_wave_speed()) +
                               std::sqrt(speed),
                             state.comm);
-      time_step     = courant_number * factor * h_min / c_max;
+      time_step     = courant_number * factor * grid_h_min / c_max;
       min_time_step = std::min(min_time_step, time_step);
       max_time_step = std::max(max_time_step, time_step);
     }
@@ -117,6 +137,7 @@ namespace psmpm
       archive.put("time_step_control/time_step", time_step);
       archive.put("time_step_control/min_time_step", min_time_step);
       archive.put("time_step_control/max_time_step", max_time_step);
+      archive.put_text("time_step_control/grid_warning", moving_grid_warning);
     }
 
     void
@@ -125,12 +146,17 @@ namespace psmpm
       time_step     = archive.get_number("time_step_control/time_step");
       min_time_step = archive.get_number("time_step_control/min_time_step");
       max_time_step = archive.get_number("time_step_control/max_time_step");
+      // Absent in checkpoints of psmpm before the moving-grid check.
+      moving_grid_warning =
+        archive.has("time_step_control/grid_warning") ?
+          archive.get_text("time_step_control/grid_warning") :
+          std::string();
     }
 
     template void
-    TimeStepControl::update(const State<1> &);
+    TimeStepControl::update(const State<1> &, const double);
     template void
-    TimeStepControl::update(const State<2> &);
+    TimeStepControl::update(const State<2> &, const double);
     template void
     TimeStepControl::initialize(const State<1> &);
     template void

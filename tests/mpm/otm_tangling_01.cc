@@ -6,8 +6,12 @@
 // the moving grid turn inside out, and the run stops with status
 // "unstable", exit code 9 and a reason that names the cell; the output
 // written before stays complete. In 1D a bar compressed faster than its
-// cells are long stops the same way. A basis other than P1 is bad input
-// naming the entries.
+// cells are long stops the same way, and with the automatic step (which
+// shrinks with the cell) once the cell has collapsed to round-off. A
+// basis other than P1 is bad input naming the entries, and so is a mass
+// strategy computed on the shape of the initial cells (ghost penalty);
+// the strategies that read only the cells' measure, or no geometry, are
+// accepted.
 #include "../app_tests.h"
 
 #include <filesystem>
@@ -73,6 +77,19 @@ main(int argc, char **argv)
                    "Time/Time step=1e-3",
                    "Material/Young's modulus=1"});
 
+  // The same bar with the automatic step: the step follows the closing
+  // cell's length down (otm_time_step_01), so the cell never inverts;
+  // it is stopped as collapsed once its length is round-off, instead of
+  // being approached in ever smaller steps.
+  expect_inverted(out,
+                  "prm/otm_bar_1d.prm",
+                  {"Initial conditions/Velocity=-10*x*x",
+                   "Boundary conditions/Fixed x=left",
+                   "Reference solution/Type=none",
+                   "Time/End time=0.2",
+                   "Time/Time step=0",
+                   "Material/Young's modulus=1"});
+
   // Powell-Sabin with otm is rejected before the run.
   std::filesystem::remove_all("run");
   std::string screen, errors;
@@ -89,4 +106,38 @@ main(int argc, char **argv)
   PSMPM_CHECK(out,
               errors.find("Transfer/Scheme = otm needs Basis/Type = linear") !=
                 std::string::npos);
+
+  // Mass strategies: checked in setup (--validate runs it, writes
+  // nothing).
+  for (const std::string type : {"ghost penalty",
+                                 "consistent",
+                                 "lumped",
+                                 "partially lumped",
+                                 "blended lumping",
+                                 "fictitious mass",
+                                 "extrapolate"})
+    {
+      const int c =
+        run_app({std::string(PSMPM_SOURCE_DIR) + "/prm/otm_tangling.prm",
+                 "--set",
+                 "Output directory=run",
+                 "--set",
+                 "Mass matrix/Type=" + type,
+                 "--validate"},
+                screen,
+                errors);
+      out << type << ": exit code " << c << std::endl;
+      if (type == "ghost penalty")
+        {
+          PSMPM_CHECK(out, c == psmpm::App::bad_input);
+          PSMPM_CHECK(out,
+                      errors.find("Mass matrix/Type = ghost penalty with "
+                                  "Transfer/Scheme = otm is not supported") !=
+                        std::string::npos);
+          PSMPM_CHECK(out,
+                      errors.find("prm/otm_tangling.prm") != std::string::npos);
+        }
+      else
+        PSMPM_CHECK(out, c == psmpm::App::success);
+    }
 }

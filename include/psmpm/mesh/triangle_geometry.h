@@ -8,8 +8,10 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace psmpm
 {
@@ -110,6 +112,25 @@ namespace psmpm
     signed_measure(const std::array<Point<2>, 3> &v)
     {
       return signed_area(v);
+    }
+
+    /// Smallest height of the triangle (over any of its edges), from the
+    /// absolute area: the length scale of the time step bound.
+    inline double
+    minimum_height(const std::array<Point<2>, 3> &v)
+    {
+      const double area = std::abs(signed_area(v));
+      double       h    = std::numeric_limits<double>::max();
+      for (unsigned int k = 0; k < 3; ++k)
+        h = std::min(h, 2 * area / v[(k + 1) % 3].distance(v[(k + 2) % 3]));
+      return h;
+    }
+
+    /// A line's "height" over either end is its length.
+    inline double
+    minimum_height(const std::array<Point<1>, 2> &v)
+    {
+      return std::abs(signed_length(v));
     }
 
     inline SimplexMap<1>

@@ -70,6 +70,12 @@ namespace psmpm
        * @p cell_dofs mapping cell c's k-th function of @p space to
        * a coefficient: cell_dofs[c * space.dofs_per_cell() + k]). A
        * "rank" field holds the MPI rank that owns each cell.
+       *
+       * @p moved_vertices: for a grid that moves with the material (OTM),
+       * the current vertex positions in the numbering of @p cell_dofs (P1
+       * only, one function per vertex); the cells are then drawn there,
+       * with a "grid_displacement" field (moved minus initial position).
+       * nullptr: the triangulation's vertices.
        */
       void
       write_grid(
@@ -82,7 +88,8 @@ namespace psmpm
           std::pair<std::string, const std::vector<Tensor<1, dim>> *>>
           &vector_fields,
         const std::vector<std::pair<std::string, const std::vector<double> *>>
-          &scalar_fields);
+                                      &scalar_fields,
+        const std::vector<Point<dim>> *moved_vertices = nullptr);
 
       unsigned int
       n_subdivisions() const

@@ -23,7 +23,8 @@ namespace psmpm
      * the automatic step dt = C f h_min / max_p (c_p + |v_p|), recomputed
      * before every step from the current state, with the Courant number
      * C, the measured stability factor f of the space and mass strategy,
-     * the smallest triangle height (element length in 1D), the largest
+     * the smallest triangle height (element length in 1D) of the grid now
+     * (the moved cells of a grid that moves with the material), the largest
      * wave speed of the particles' current material state (a neo-Hookean
      * body stiffens as it compresses) and the particle speed (material
      * must not cross more than a cell per step). A fixed step above
@@ -44,12 +45,15 @@ namespace psmpm
       void
       initialize(const State<dim> &state);
 
-      /// The step to take from @p time (the last one ends at end_time).
-      /// Recompute the automatic step from the current state (all
-      /// ranks); nothing for a fixed step.
+      /// Recompute the automatic step from the current state and
+      /// @p grid_h_min, the smallest cell height of the grid now
+      /// (TransferScheme::minimum_height(): the initial mesh's unless the
+      /// grid moves); all ranks. A fixed step is kept; if it exceeds
+      /// grid_h_min / c_p (a moving grid compressed), moving_grid_warning
+      /// is set once.
       template <int dim>
       void
-      update(const State<dim> &state);
+      update(const State<dim> &state, const double grid_h_min);
 
       double
       next(const double time) const
@@ -110,6 +114,14 @@ namespace psmpm
         return time_step_warning;
       }
 
+      /// Non-empty once a fixed step exceeded h_min / c_p of a moving
+      /// grid during the run.
+      const std::string &
+      grid_warning() const
+      {
+        return moving_grid_warning;
+      }
+
     private:
       double      end_time        = 0.02;
       double      fixed_step      = 0;
@@ -119,8 +131,9 @@ namespace psmpm
       double      min_time_step   = 0;
       double      max_time_step   = 0;
       double      factor          = 1; ///< of the space and mass strategy
-      double      h_min           = 0;
+      double      h_min           = 0; ///< of the initial mesh
       std::string time_step_warning;
+      std::string moving_grid_warning;
     };
   } // namespace Simulator
 } // namespace psmpm

@@ -74,6 +74,28 @@ namespace psmpm
         return false;
       }
 
+      /// Smallest cell height (triangle height, line length in 1D) of the
+      /// grid the scheme computes on now: the length of the time step
+      /// bound. The fixed mesh's by default; a scheme whose grid moves
+      /// (OTM) returns that of its moved cells, which shrink as the
+      /// material compresses. Collective: every rank calls it between
+      /// steps.
+      virtual double
+      minimum_height(const State<dim> &state) const
+      {
+        return state.locator.minimum_height();
+      }
+
+      /// The current positions of the grid's vertices in local relevant
+      /// DoF numbering (P1: one DoF per vertex) if the grid moves, so that
+      /// the grid output shows the moved cells; nullptr if the grid is the
+      /// triangulation.
+      virtual const std::vector<Point<dim>> *
+      moved_vertices() const
+      {
+        return nullptr;
+      }
+
       /// Advance @p state by state.dt. Returns false if the step had to
       /// be abandoned (a failure is reported, positions are not advanced).
       virtual bool

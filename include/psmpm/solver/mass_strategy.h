@@ -64,6 +64,22 @@ namespace psmpm
       }
 
       /**
+       * true if the strategy uses the shape of the cells (beyond their
+       * measure), computed once on the mesh: `ghost penalty` projects onto
+       * the polynomials of each pair of cells. A grid that moves with the
+       * material (Transfer/Scheme = otm) keeps every cell's particles, so
+       * what scales with a cell's measure and its particle mass (fill,
+       * full-support diagonal, int N_k N_l of P1) is the same on the
+       * initial and the moved cell for material that moves with it; the
+       * shape is not, and otm rejects such a strategy.
+       */
+      virtual bool
+      depends_on_cell_shape() const
+      {
+        return false;
+      }
+
+      /**
        * Called once per step after the per-cell particle mass matrices
        * are accumulated and before they are assembled. @p diagonal is the
        * particle diagonal M_ii in local relevant numbering. Returns true

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 namespace psmpm
 {
@@ -36,11 +37,13 @@ namespace psmpm
        * from the cell's current vertices alone, and an affine cell map
        * keeps every particle at the same barycentric coordinates: the
        * particles never leave their cells, and the triangulation, the
-       * DoF handler and the locator (what point location, the grid
-       * output and the time step bound read) stay those of the initial
-       * grid. Only cells that hold particles form the OTM grid; one of
-       * them turning inside out (signed measure of the opposite sign or
-       * zero) ends the run (Failure::inverted_cell) before anything moves.
+       * DoF handler and the locator stay those of the initial grid; the
+       * time step bound (minimum_height()) and the grid output
+       * (moved_vertices()) read the moved vertices. Only cells that hold
+       * particles form the OTM grid; one of them turning inside out
+       * (signed measure of the opposite sign or zero) or collapsing to
+       * round-off (below collapsed_ratio of its initial measure) ends the
+       * run (Failure::inverted_cell) before anything moves.
        *
        * `OTM update = split` computes the nodal velocity the MPM way
        * (v_k = M^{-1} l_k, a_k = M^{-1} f_k, u = v_k + dt_k a_k; two
@@ -82,6 +85,15 @@ namespace psmpm
                         "alone); Basis/Type = " +
                         state.space->name() + " is not supported."));
           const auto &grid = *state.grid;
+          AssertThrow(
+            !grid.strategy().depends_on_cell_shape(),
+            ExcMessage(
+              "Mass matrix/Type = " + grid.parameters.type +
+              " with Transfer/Scheme = otm is not supported: the strategy "
+              "is computed on the shape of the initial cells, which the "
+              "moving grid of otm changes (doc/otm.md). Use consistent "
+              "(recommended for otm), lumped, partially lumped, blended "
+              "lumping, fictitious mass or extrapolate."));
           // Vertex positions in local relevant DoF numbering (P1: one DoF
           // per vertex, the vertex is the DoF's control point).
           const auto  points = state.space->control_points(state.dof_handler);
@@ -111,6 +123,28 @@ namespace psmpm
         moves_grid() const override
         {
           return true;
+        }
+
+        /// The smallest height of the moved cells that hold particles
+        /// (the others carry no material and are not checked for
+        /// inversion either); the fixed mesh's if no rank has particles.
+        double
+        minimum_height(const State<dim> &state) const override
+        {
+          double h = std::numeric_limits<double>::max();
+          for (const unsigned int c : occupied)
+            h = std::min(h,
+                         Mesh::minimum_height(vertices(*state.grid, nodes, c)));
+          h = Utilities::MPI::min(h, state.comm);
+          return h < std::numeric_limits<double>::max() ?
+                   h :
+                   state.locator.minimum_height();
+        }
+
+        const std::vector<Point<dim>> *
+        moved_vertices() const override
+        {
+          return &nodes;
         }
 
         bool
@@ -179,7 +213,7 @@ namespace psmpm
         }
 
         /// x_a,k+1 = x_a,k + dt u_a; false (and nothing moved) if a cell
-        /// of the OTM grid turns inside out.
+        /// of the OTM grid turns inside out or collapses.
         bool
         move_grid(State<dim>       &state,
                   StabilityMonitor &monitor,
@@ -191,7 +225,11 @@ namespace psmpm
           for (const unsigned int c : occupied)
             {
               const double measure = signed_measure(*state.grid, moved, c);
-              if (!(measure * initial_measure[c] > 0))
+              // Inverted (ratio <= 0), or collapsed to round-off: the
+              // automatic step follows the cell's height down, so a cell
+              // that closes (material squeezed to zero volume) would
+              // otherwise be approached in ever smaller steps forever.
+              if (!(measure / initial_measure[c] > collapsed_ratio))
                 {
                   const auto  v = vertices(*state.grid, moved, c);
                   std::string where;
@@ -202,13 +240,15 @@ namespace psmpm
                         where += (d > 0 ? ", " : "") + prm_value(v[k][d]);
                       where += ")";
                     }
-                  monitor.report(Failure::inverted_cell,
-                                 "otm: cell " + std::to_string(c) +
-                                   " of the moving grid inverted (signed " +
-                                   (dim == 1 ? "length " : "area ") +
-                                   prm_value(measure) + ", initially " +
-                                   prm_value(initial_measure[c]) +
-                                   "; moved vertices " + where + ")");
+                  monitor.report(
+                    Failure::inverted_cell,
+                    "otm: cell " + std::to_string(c) + " of the moving grid " +
+                      (measure / initial_measure[c] > 0 ? "collapsed" :
+                                                          "inverted") +
+                      " (signed " + (dim == 1 ? "length " : "area ") +
+                      prm_value(measure) + ", initially " +
+                      prm_value(initial_measure[c]) + "; moved vertices " +
+                      where + ")");
                   return false;
                 }
             }
@@ -318,6 +358,11 @@ namespace psmpm
                 }
             }
         }
+
+        /// Measure ratio (moved over initial) below which a cell counts
+        /// as collapsed: with coordinates O(1) and cells O(0.1) or larger
+        /// its measure is then round-off (relative error ~ 1e-16 / h).
+        static constexpr double collapsed_ratio = 1e-12;
 
         const bool split;
         /// Vertex positions x_a,k (and the tentative x_a,k+1), local

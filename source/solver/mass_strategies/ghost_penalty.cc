@@ -55,6 +55,15 @@ namespace psmpm
           return true;
         }
 
+        /// The pair matrices vanish for polynomials of the initial pair;
+        /// on a grid moved non-affinely across the pair they penalise
+        /// the affine fields of the current configuration.
+        bool
+        depends_on_cell_shape() const override
+        {
+          return true;
+        }
+
         bool
         prepare(GridSystem<dim> &grid, const std::vector<double> &) override
         {
