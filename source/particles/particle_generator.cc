@@ -248,6 +248,18 @@ namespace psmpm
 
 
     template <int dim>
+    bool
+    ParticleGenerator<dim>::fills_mesh(const Triangulation<dim> &tria) const
+    {
+      if (region.empty())
+        return true;
+      for (const auto &x : tria.get_vertices())
+        if (!in_region(x))
+          return false;
+      return true;
+    }
+
+    template <int dim>
     void
     ParticleGenerator<dim>::generate(
       const Mesh::MeshGenerator<dim>          &mesh,

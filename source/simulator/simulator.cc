@@ -10,6 +10,7 @@
 #include <psmpm/base/format.h>
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
+#include <psmpm/mesh/confinement.h>
 #include <psmpm/postprocess/progress.h>
 #include <psmpm/simulator/simulator.h>
 
@@ -142,18 +143,48 @@ namespace psmpm
                     std::to_string(dim) + "D (known: " +
                     Basis::SpaceRegistry<dim>::instance().names() + ")."));
 
-      // "automatic" takes the space's measured defaults.
+      // "automatic" takes the space's measured defaults. An explicit
+      // transfer is created first: the mass default depends on whether
+      // its grid moves; an automatic transfer follows the mass matrix.
       const auto space = Basis::create_space<dim>(basis_name);
-      if (grid_parameters.type == "automatic")
-        grid_parameters.type = space->default_mass_matrix();
       prm.enter_subsection("Transfer");
       transfer_name = prm.get("Scheme");
-      if (transfer_name == "automatic")
-        transfer_name = space->default_transfer(grid_parameters.type);
-      transfer =
-        TransferSchemeRegistry<dim>::instance().create(transfer_name,
-                                                       "Transfer/Scheme",
-                                                       prm);
+      transfer.reset();
+      if (transfer_name != "automatic")
+        transfer =
+          TransferSchemeRegistry<dim>::instance().create(transfer_name,
+                                                         "Transfer/Scheme",
+                                                         prm);
+      const bool mass_automatic     = grid_parameters.type == "automatic";
+      const bool transfer_automatic = transfer_name == "automatic";
+      const bool grid_moves         = transfer && transfer->moves_grid();
+      if (mass_automatic)
+        grid_parameters.type = space->default_mass_matrix(grid_moves);
+      if (transfer_automatic)
+        {
+          transfer_name = space->default_transfer(grid_parameters.type);
+          transfer =
+            TransferSchemeRegistry<dim>::instance().create(transfer_name,
+                                                           "Transfer/Scheme",
+                                                           prm);
+        }
+      // The choice for a closed, filled mesh is made once the mesh is
+      // known (setup_space_and_grid); its transfer is created here, where
+      // its parameters are.
+      closed_mass_matrix.clear();
+      closed_transfer_name.clear();
+      closed_transfer.reset();
+      if (mass_automatic && !grid_moves)
+        {
+          closed_mass_matrix   = "consistent";
+          closed_transfer_name = transfer_automatic ?
+                                   space->default_transfer(closed_mass_matrix) :
+                                   transfer_name;
+          if (closed_transfer_name != transfer_name)
+            closed_transfer =
+              TransferSchemeRegistry<dim>::instance()
+                .create(closed_transfer_name, "Transfer/Scheme", prm);
+        }
       prm.leave_subsection();
 
       prm.enter_subsection("Initial conditions");
@@ -253,6 +284,22 @@ namespace psmpm
                               fixed_entries[d] + ": " + e.what()));
               }
           }
+      // Material that fills a mesh whose boundaries are all closed in
+      // their normal direction cannot leave cells empty (unless it tears
+      // inside): `automatic` takes the consistent mass matrix, the most
+      // accurate (large vibrating bar, Powell-Sabin: displacement error
+      // 3.7e-3 against 9.1e-2 with lumped mass and APIC at the same CPU
+      // time; doc/transfers.md "Defaults").
+      if (!closed_mass_matrix.empty() &&
+          particle_generator.fills_mesh(state.triangulation) &&
+          Mesh::is_closed<dim>(state.triangulation, fixed))
+        {
+          grid_parameters.type = closed_mass_matrix;
+          if (closed_transfer)
+            transfer = std::move(closed_transfer);
+          transfer_name = closed_transfer_name;
+        }
+      closed_mass_matrix.clear();
       state.grid = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
                                                              *state.space,
                                                              state.dof_handler,

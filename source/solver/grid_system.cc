@@ -12,12 +12,11 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/vector.h>
 
-#include <Epetra_CrsMatrix.h>
-
-#include <algorithm>
-
 #include <psmpm/base/format.h>
 #include <psmpm/solver/grid_system.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <algorithm>
 
 namespace psmpm
 {
@@ -34,7 +33,8 @@ namespace psmpm
         Patterns::Selection("automatic|" +
                             MassStrategyRegistry<dim>::instance().selection()),
         "automatic: the basis' measured default (lumped for powell-sabin, "
-        "partially lumped for linear; doc/transfers.md); " +
+        "ghost penalty for linear, partially lumped for linear with a "
+        "moving grid (otm); doc/transfers.md); " +
           MassStrategyRegistry<dim>::instance().documentation());
       prm.declare_entry("Solver tolerance",
                         "1e-12",
@@ -269,9 +269,9 @@ namespace psmpm
       for (unsigned int l = 0; l < relevant_global.size(); ++l)
         if (c.is_constrained(relevant_global[l]))
           {
-            constrained[d][l] = 1;
+            constrained[d][l]   = 1;
             const auto *entries = c.get_constraint_entries(relevant_global[l]);
-            only_dirichlet[d] = only_dirichlet[d] &&
+            only_dirichlet[d]   = only_dirichlet[d] &&
                                 (entries == nullptr || entries->empty()) &&
                                 c.get_inhomogeneity(relevant_global[l]) == 0;
           }
@@ -287,6 +287,7 @@ namespace psmpm
       const Epetra_CrsMatrix &A = matrix[0].trilinos_matrix();
       int                    *offsets, *columns;
       double                 *values;
+      ++generation;
       cell_slots.clear();
       if (A.ExtractCrsDataPointers(offsets, columns, values) != 0)
         return;
@@ -297,10 +298,9 @@ namespace psmpm
       matrix_column.resize(relevant_global.size());
       for (unsigned int l = 0; l < relevant_global.size(); ++l)
         {
-          const auto g     = relevant_global[l];
-          matrix_row[l]    = owned.is_element(g) ? A.RowMap().LID(
-                                                  static_cast<int>(g)) :
-                                                   -1;
+          const auto g = relevant_global[l];
+          matrix_row[l] =
+            owned.is_element(g) ? A.RowMap().LID(static_cast<int>(g)) : -1;
           matrix_column[l] = A.ColMap().LID(static_cast<int>(g));
         }
       const unsigned int n = dofs_per_cell;
@@ -323,6 +323,34 @@ namespace psmpm
                     static_cast<int>(p - columns);
                 }
         }
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::patch_slots(const unsigned int *dofs,
+                                 const unsigned int  n,
+                                 std::vector<int>   &slots) const
+    {
+      slots.clear();
+      if (cell_slots.empty())
+        return;
+      const Epetra_CrsMatrix &A = matrix[0].trilinos_matrix();
+      int                    *offsets, *columns;
+      double                 *values;
+      A.ExtractCrsDataPointers(offsets, columns, values);
+      slots.assign(n * n, -1);
+      for (unsigned int k = 0; k < n; ++k)
+        if (const int r = matrix_row[dofs[k]]; r >= 0)
+          for (unsigned int l = 0; l < n; ++l)
+            {
+              const int *begin = columns + offsets[r];
+              const int *end   = columns + offsets[r + 1];
+              const int *p =
+                std::lower_bound(begin, end, matrix_column[dofs[l]]);
+              AssertThrow(p != end && *p == matrix_column[dofs[l]],
+                          ExcInternalError());
+              slots[k * n + l] = static_cast<int>(p - columns);
+            }
     }
 
     namespace
@@ -524,10 +552,11 @@ namespace psmpm
                                const unsigned int *dofs,
                                const unsigned int  n,
                                const double       *values,
+                               const double        weight,
                                const int          *slots)
     {
-      Epetra_CrsMatrix &A = const_cast<Epetra_CrsMatrix &>(
-        matrix[d].trilinos_matrix());
+      Epetra_CrsMatrix &A =
+        const_cast<Epetra_CrsMatrix &>(matrix[d].trilinos_matrix());
       int    *offsets, *columns;
       double *entries;
       A.ExtractCrsDataPointers(offsets, columns, entries);
@@ -540,11 +569,13 @@ namespace psmpm
           const int r = matrix_row[row];
           for (unsigned int l = 0; l < n; ++l)
             {
-              const double v = values[k * n + l];
+              const double v = weight * values[k * n + l];
               if (fixed[dofs[l]] || v == 0)
                 continue;
               if (r < 0) // another rank's row: through Trilinos
-                matrix[d].add(relevant_global[row], relevant_global[dofs[l]], v);
+                matrix[d].add(relevant_global[row],
+                              relevant_global[dofs[l]],
+                              v);
               else if (slots != nullptr)
                 entries[slots[k * n + l]] += v;
               else
@@ -560,15 +591,17 @@ namespace psmpm
       // DoF (keeps the matrix invertible and of the right scale).
       double average = 0;
       for (unsigned int k = 0; k < n; ++k)
-        average += std::abs(values[k * n + k]);
+        average += std::abs(weight * values[k * n + k]);
       average /= n;
       for (unsigned int k = 0; k < n; ++k)
         if (fixed[dofs[k]])
           {
-            const double v = values[k * n + k] != 0 ?
-                               std::abs(values[k * n + k]) :
+            const double v = weight * values[k * n + k] != 0 ?
+                               std::abs(weight * values[k * n + k]) :
                                average;
-            matrix[d].add(relevant_global[dofs[k]], relevant_global[dofs[k]], v);
+            matrix[d].add(relevant_global[dofs[k]],
+                          relevant_global[dofs[k]],
+                          v);
           }
     }
 
@@ -593,10 +626,15 @@ namespace psmpm
         }
       for (const auto &patch : patches)
         {
-          std::vector<types::global_dof_index> patch_dofs(patch.dofs.size());
-          for (unsigned int k = 0; k < patch.dofs.size(); ++k)
-            patch_dofs[k] = relevant_global[patch.dofs[k]];
-          active_constraints[d].distribute_local_to_global(patch.matrix,
+          std::vector<types::global_dof_index> patch_dofs(patch.n);
+          FullMatrix<double>                   block(patch.n, patch.n);
+          for (unsigned int k = 0; k < patch.n; ++k)
+            {
+              patch_dofs[k] = relevant_global[patch.dofs[k]];
+              for (unsigned int l = 0; l < patch.n; ++l)
+                block(k, l) = patch.weight * patch.values[k * patch.n + l];
+            }
+          active_constraints[d].distribute_local_to_global(block,
                                                            patch_dofs,
                                                            matrix[d]);
         }
@@ -621,14 +659,16 @@ namespace psmpm
                         &cell_dof_indices[c * n],
                         n,
                         &cells.mass[c * n * n],
+                        1.,
                         &cell_slots[o * n * n]);
             }
           for (const auto &patch : patches)
             add_block(d,
-                      patch.dofs.data(),
-                      patch.dofs.size(),
-                      &patch.matrix(0, 0),
-                      nullptr);
+                      patch.dofs,
+                      patch.n,
+                      patch.values,
+                      patch.weight,
+                      patch.slots);
         }
       else
         assemble_matrix_with_constraints(d);

@@ -10,11 +10,11 @@
 // * particle mass is unchanged;
 // * free bodies without gravity (the rotating block: plain, stiff E = 1e9
 //   and nearly incompressible nu = 0.49) keep their linear momentum (zero)
-//   to 1e-6 of m omega R; with Powell-Sabin (lumped mass, APIC) also their
-//   angular momentum and mean rotation angle to 1 % (RotationStatistics:
-//   particles plus their affine part). P1's default (partially lumped,
-//   MUSL) loses about 40 % of it, printed, not asserted: the open part of
-//   issue 9 (doc/transfers.md "Defaults").
+//   to 1e-6 of m omega R, and their angular momentum and mean rotation
+//   angle to 1 % (RotationStatistics: particles plus their affine part),
+//   both bases: Powell-Sabin with lumped mass and APIC, P1 with the
+//   ghost-penalty mass matrix and MUSL (P1's earlier default, partially
+//   lumped, lost about 45 % of it; doc/transfers.md "Defaults").
 #include <psmpm/postprocess/rotation_statistics.h>
 
 #include "../mpm_tests.h"
@@ -79,11 +79,8 @@ namespace
         << ", angle / (omega T) = " << now.rotation_angle / turn
         << std::defaultfloat << std::endl;
     PSMPM_CHECK(out, momentum.norm() < 1e-6 * scale);
-    if (basis == "powell-sabin")
-      {
-        PSMPM_CHECK(out, std::abs(now.angular_momentum / h0 - 1) < 0.01);
-        PSMPM_CHECK(out, std::abs(now.rotation_angle / turn - 1) < 0.01);
-      }
+    PSMPM_CHECK(out, std::abs(now.angular_momentum / h0 - 1) < 0.01);
+    PSMPM_CHECK(out, std::abs(now.rotation_angle / turn - 1) < 0.01);
   }
 } // namespace
 

@@ -145,8 +145,9 @@ namespace psmpm
       /// already reproduces affine fields, and MUSL gives APIC's errors
       /// (Table 4.3 to 1e-8) with one solve less.
       std::string
-      default_mass_matrix() const override
+      default_mass_matrix(const bool grid_moves = false) const override
       {
+        (void)grid_moves;
         return "lumped";
       }
       std::string

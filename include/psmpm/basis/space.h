@@ -158,17 +158,19 @@ namespace psmpm
        * automatic` select for this space: the combination that the suite
        * of doc/transfers.md measured as stable and accurate on free,
        * emptying and filling bodies (the transfer for the mass matrix in
-       * use). P1: partially lumped mass with MUSL. Measured alternatives
-       * (doc/transfers.md): lumped mass with APIC and the rotational affine
-       * matrix keeps the angular momentum of a free rotating body to 1e-4
-       * (MUSL loses 44 %) but its PIC velocity update damps every
-       * non-rotational motion (a vibrating bar's displacement error grows
-       * 40x); a FLIP blend is either damped as well or unstable.
+       * use). P1: the ghost-penalty stabilised mass matrix with MUSL, the
+       * only P1 combination measured to keep a free body's rigid rotation
+       * (angular momentum and angle to 1e-4) and to complete every scene of
+       * the suite; partially lumped mass lost 47 % of the angular momentum,
+       * lumped mass with APIC keeps it but its PIC update damps a vibrating
+       * bar 40x. The ghost penalty is computed on the initial cells, so a
+       * transfer whose grid moves with the material (@p grid_moves, OTM)
+       * gets partially lumped mass instead.
        */
       virtual std::string
-      default_mass_matrix() const
+      default_mass_matrix(const bool grid_moves = false) const
       {
-        return "partially lumped";
+        return grid_moves ? "partially lumped" : "ghost penalty";
       }
       virtual std::string
       default_transfer(const std::string &mass_matrix) const

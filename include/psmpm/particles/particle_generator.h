@@ -64,6 +64,11 @@ namespace psmpm
       void
       check_count(const Mesh::MeshGenerator<dim> &mesh) const;
 
+      /// Whether every cell of @p tria receives particles: no Region, or a
+      /// Region that contains the whole mesh.
+      bool
+      fills_mesh(const Triangulation<dim> &tria) const;
+
     private:
       bool
       in_region(const Point<dim> &p) const;

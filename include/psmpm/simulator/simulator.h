@@ -245,17 +245,23 @@ namespace psmpm
       typename Solver::GridSystem<dim>::Parameters grid_parameters;
       std::string                                  basis_name;
       std::string                                  transfer_name;
-      std::string                                  velocity_expression;
-      std::string                                  velocity_constants;
-      std::array<std::vector<std::string>, dim>    fixed_names;
-      unsigned int                                 output_interval = 0;
-      unsigned int                                 error_interval  = 1;
-      unsigned int                                 subdivisions    = 0;
-      std::vector<double>                          tracked_point;
+      /// Mass matrix and transfer that `automatic` takes on a closed,
+      /// filled mesh (setup_space_and_grid() decides; empty: not
+      /// automatic or the grid moves).
+      std::string                               closed_mass_matrix;
+      std::string                               closed_transfer_name;
+      std::string                               velocity_expression;
+      std::string                               velocity_constants;
+      std::array<std::vector<std::string>, dim> fixed_names;
+      unsigned int                              output_interval = 0;
+      unsigned int                              error_interval  = 1;
+      unsigned int                              subdivisions    = 0;
+      std::vector<double>                       tracked_point;
 
       // Components.
       Checkpoint                                         checkpoint;
       std::unique_ptr<TransferScheme<dim>>               transfer;
+      std::unique_ptr<TransferScheme<dim>>               closed_transfer;
       TimeStepControl                                    time_step_control;
       StabilityMonitor                                   monitor;
       std::unique_ptr<Postprocess::Reference<dim>>       reference;

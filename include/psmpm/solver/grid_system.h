@@ -82,12 +82,20 @@ namespace psmpm
       };
 
       /// A dense block over a set of DoFs (local relevant numbering) that a
-      /// strategy adds to the matrix of every component (e.g. a ghost
-      /// penalty over the union of two face neighbours).
+      /// strategy adds, times @p weight, to the matrix of every component
+      /// (e.g. a ghost penalty over the union of two cells). The block
+      /// only points to data the strategy keeps (a step adds tens of
+      /// thousands of blocks: no allocation per block and step).
       struct PatchBlock
       {
-        std::vector<unsigned int> dofs;
-        FullMatrix<double>        matrix;
+        const unsigned int *dofs = nullptr;
+        unsigned int        n    = 0;
+        /// n x n, row-major.
+        const double *values = nullptr;
+        double        weight = 1;
+        /// Value-array positions from patch_slots() for the current
+        /// sparsity_generation(), or nullptr (searched in the row).
+        const int *slots = nullptr;
       };
 
       /// The vertex view of the DoFs, for vertex-wise strategies.
@@ -171,6 +179,21 @@ namespace psmpm
       {
         return patches;
       }
+      /// Changes with every change of the sparsity pattern: positions from
+      /// patch_slots() stay valid while it does not.
+      unsigned int
+      sparsity_generation() const
+      {
+        return generation;
+      }
+      /// Value-array positions of the entries (k, l) of a dense block over
+      /// the local relevant DoFs @p dofs (-1 where the row is another
+      /// rank's), for PatchBlock::slots; empty if the matrices are not
+      /// assembled directly.
+      void
+      patch_slots(const unsigned int *dofs,
+                  const unsigned int  n,
+                  std::vector<int>   &slots) const;
       const std::vector<unsigned int> &
       owned_cells() const
       {
@@ -309,31 +332,32 @@ namespace psmpm
       /// array (cell blocks with their precomputed @p slots, other blocks
       /// by a search of the row).
       void
-      add_block(const unsigned int   d,
-                const unsigned int  *dofs,
-                const unsigned int   n,
-                const double        *values,
-                const int           *slots);
+      add_block(const unsigned int  d,
+                const unsigned int *dofs,
+                const unsigned int  n,
+                const double       *values,
+                const double        weight,
+                const int          *slots);
       void
       update_constraint_flags(const unsigned int d);
       unsigned int
       solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
 
-      std::unique_ptr<MassStrategy<dim>>                    mass_strategy;
-      const Basis::Space<dim>                              &space;
-      const DoFHandler<dim>                                &dof_handler;
-      MPI_Comm                                              comm;
-      IndexSet                                              owned;
-      IndexSet                                              relevant;
-      std::vector<types::global_dof_index>                  relevant_global;
-      std::vector<unsigned int>                             cell_dof_indices;
-      std::vector<unsigned int>                             owned_cell_indices;
-      CellArrays                                            cells;
-      std::vector<PatchBlock>                               patches;
-      VertexTables                                          vertices;
-      std::array<AffineConstraints<double>, dim>            dirichlet;
-      std::array<AffineConstraints<double>, dim>            active_constraints;
-      std::array<TrilinosWrappers::SparseMatrix, dim>       matrix;
+      std::unique_ptr<MassStrategy<dim>>              mass_strategy;
+      const Basis::Space<dim>                        &space;
+      const DoFHandler<dim>                          &dof_handler;
+      MPI_Comm                                        comm;
+      IndexSet                                        owned;
+      IndexSet                                        relevant;
+      std::vector<types::global_dof_index>            relevant_global;
+      std::vector<unsigned int>                       cell_dof_indices;
+      std::vector<unsigned int>                       owned_cell_indices;
+      CellArrays                                      cells;
+      std::vector<PatchBlock>                         patches;
+      VertexTables                                    vertices;
+      std::array<AffineConstraints<double>, dim>      dirichlet;
+      std::array<AffineConstraints<double>, dim>      active_constraints;
+      std::array<TrilinosWrappers::SparseMatrix, dim> matrix;
       /// Direct assembly (assemble_matrix): for component d, whether every
       /// constraint fixes its DoF to zero (Dirichlet only), which DoFs are
       /// constrained (local relevant numbering), the matrix row and column
@@ -345,6 +369,7 @@ namespace psmpm
       std::vector<int>                                      matrix_row;
       std::vector<int>                                      matrix_column;
       std::vector<int>                                      cell_slots;
+      unsigned int                                          generation = 0;
       std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
       std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
       TrilinosWrappers::MPI::Vector                         lumped; // owned

@@ -82,7 +82,7 @@ namespace psmpm
           const double      rho    = grid.reference_density();
           auto             &blocks = grid.patch_blocks();
           std::vector<bool> treated(active.size(), false);
-          for (const auto &f : faces)
+          for (auto &f : faces)
             {
               const double w =
                 gamma * rho *
@@ -98,11 +98,18 @@ namespace psmpm
               // polynomial extension.
               if (!(fill[f.cells[0]] > 0 && fill[f.cells[1]] > 0))
                 continue;
+              if (f.generation != grid.sparsity_generation())
+                {
+                  grid.patch_slots(f.dofs.data(), f.dofs.size(), f.slots);
+                  f.generation = grid.sparsity_generation();
+                }
               typename GridSystem<dim>::PatchBlock b;
-              b.dofs = f.dofs;
-              b.matrix.reinit(f.S.m(), f.S.n());
-              b.matrix.add(w, f.S);
-              blocks.push_back(std::move(b));
+              b.dofs   = f.dofs.data();
+              b.n      = f.dofs.size();
+              b.values = &f.S(0, 0);
+              b.weight = w;
+              b.slots  = f.slots.empty() ? nullptr : f.slots.data();
+              blocks.push_back(b);
               for (const unsigned int l : f.dofs)
                 treated[l] = true;
             }
@@ -122,6 +129,10 @@ namespace psmpm
           std::array<unsigned int, 2> cells;
           std::vector<unsigned int>   dofs; ///< local relevant, unique
           FullMatrix<double>          S;    ///< int (u - Pu)(v - Pv)
+          /// Value-array positions of S's entries (GridSystem::patch_slots)
+          /// for the sparsity of @p generation.
+          std::vector<int> slots;
+          unsigned int     generation = 0;
         };
 
         /// Monomials of degree <= k in (x - x0) / h.
