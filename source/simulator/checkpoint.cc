@@ -372,7 +372,10 @@ namespace psmpm
           for (const auto &in : incoming)
             unpack_with_cells(in.second, mine);
         }
-      particles = std::move(mine);
+      // The scene's number of bodies is not particle data.
+      const unsigned int n_bodies = particles.n_bodies;
+      particles                   = std::move(mine);
+      particles.n_bodies          = n_bodies;
     }
 
 
