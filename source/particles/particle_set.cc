@@ -270,9 +270,12 @@ namespace psmpm
       for (const auto &s : state_names)
         names += s + "\n";
       archive.put_text("particles/state_names", names);
-      archive.put_integers("particles/body_id",
-                           std::vector<std::uint64_t>(body_id.begin(),
-                                                      body_id.end()));
+      // Only scenes with Bodies: the checkpoints of the others keep their
+      // entries.
+      if (n_bodies > 0)
+        archive.put_integers("particles/body_id",
+                             std::vector<std::uint64_t>(body_id.begin(),
+                                                        body_id.end()));
     }
 
 

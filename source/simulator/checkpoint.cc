@@ -318,6 +318,7 @@ namespace psmpm
         return;
       Particles::ParticleSet<dim> global;
       global.set_state_names(particles.get_state_names());
+      global.n_bodies = particles.n_bodies;
       for (const auto &b : all)
         unpack_with_cells(b, global);
       global.save(archive);

@@ -108,7 +108,7 @@ namespace psmpm
        * density (one value per particle), the vectors (n x dim), stress and
        * affine matrix (n x dim^2, row-major), the state block (n x
        * n_state(), names in "particles/state_names", one per line) and
-       * body_id (integers; absent from older checkpoints: then 0).
+       * body_id (integers; only if n_bodies > 0, absent: 0).
        */
       void
       save(Archive &archive) const;
