@@ -3,7 +3,10 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/format.h>
 #include <psmpm/particles/particle_generator.h>
+
+#include <cmath>
 
 namespace psmpm
 {
@@ -13,14 +16,14 @@ namespace psmpm
     {
       /// 1D: per_block_x particles at the centres of equal sub-intervals
       /// of every element (= block), numbered left to right.
-      template <typename InRegion>
+      template <typename Classify>
       void
       generate_lines(const ParticleGenerator<1>              &generator,
                      const Mesh::MeshGenerator<1>            &mesh,
                      const Mesh::CellLocator<1>              &locator,
-                     const double                             density,
+                     const std::vector<double>               &density,
                      const std::function<bool(unsigned int)> &is_owned,
-                     const InRegion                          &in_region,
+                     const Classify                          &classify,
                      ParticleSet<1>                          &particles)
       {
         const unsigned int n      = generator.per_block_x;
@@ -33,27 +36,28 @@ namespace psmpm
             {
               // The same x as the 2D block layout with these blocks.
               const Point<1> x(h * (b + (i + 0.5) / n));
-              if (!in_region(x))
+              const int      body = classify(x);
+              if (body < 0)
                 continue;
               const unsigned int c = locator.locate(x, hint);
               AssertThrow(c != Mesh::CellLocator<1>::invalid,
                           ExcInternalError());
               hint = c;
               if (is_owned(c))
-                particles.add(id, c, x, volume, density);
+                particles.add(id, c, x, volume, density[body], body);
             }
       }
 
       /// 2D block meshes: a per_block_x by per_block_y sub-grid of every
       /// block, numbered block by block.
-      template <typename InRegion>
+      template <typename Classify>
       void
       generate_blocks(const ParticleGenerator<2>              &generator,
                       const Mesh::MeshGenerator<2>            &mesh,
                       const Mesh::CellLocator<2>              &locator,
-                      const double                             density,
+                      const std::vector<double>               &density,
                       const std::function<bool(unsigned int)> &is_owned,
-                      const InRegion                          &in_region,
+                      const Classify                          &classify,
                       ParticleSet<2>                          &particles)
       {
         const unsigned int per_block_x = generator.per_block_x;
@@ -70,26 +74,27 @@ namespace psmpm
                 {
                   const Point<2> x(hx * (bi + (i + 0.5) / per_block_x),
                                    hy * (bj + (j + 0.5) / per_block_y));
-                  if (!in_region(x))
+                  const int      body = classify(x);
+                  if (body < 0)
                     continue;
                   const unsigned int c = locator.locate(x, hint);
                   AssertThrow(c != Mesh::CellLocator<2>::invalid,
                               ExcInternalError());
                   hint = c;
                   if (is_owned(c))
-                    particles.add(id, c, x, volume, density);
+                    particles.add(id, c, x, volume, density[body], body);
                 }
       }
 
       /// 2D Gmsh meshes: every triangle split into per_cell^2 similar
       /// triangles, a particle at each centroid.
-      template <typename InRegion>
+      template <typename Classify>
       void
       generate_per_cell(const ParticleGenerator<2>              &generator,
                         const Triangulation<2>                  &tria,
-                        const double                             density,
+                        const std::vector<double>               &density,
                         const std::function<bool(unsigned int)> &is_owned,
-                        const InRegion                          &in_region,
+                        const Classify                          &classify,
                         ParticleSet<2>                          &particles)
       {
         const unsigned int k     = generator.per_cell;
@@ -113,15 +118,22 @@ namespace psmpm
                 {
                   const Point<2> up =
                     v0 + (i + 1. / 3) * e1 + (j + 1. / 3) * e2;
-                  if (is_owned(c) && in_region(up))
-                    particles.add(id, c, up, volume, density);
+                  const int body_up = classify(up);
+                  if (is_owned(c) && body_up >= 0)
+                    particles.add(id, c, up, volume, density[body_up], body_up);
                   ++id;
                   if (i + j + 1 < k)
                     {
                       const Point<2> down =
                         v0 + (i + 2. / 3) * e1 + (j + 2. / 3) * e2;
-                      if (is_owned(c) && in_region(down))
-                        particles.add(id, c, down, volume, density);
+                      const int body_down = classify(down);
+                      if (is_owned(c) && body_down >= 0)
+                        particles.add(id,
+                                      c,
+                                      down,
+                                      volume,
+                                      density[body_down],
+                                      body_down);
                       ++id;
                     }
                 }
@@ -160,6 +172,7 @@ namespace psmpm
                         "Refuse to start when more particles would be made "
                         "(each needs about 0.5 kB with its caches).");
       prm.leave_subsection();
+      Bodies::declare_parameters(prm);
     }
 
 
@@ -195,6 +208,16 @@ namespace psmpm
             region.empty() || (region[2] > region[0] && region[3] > region[1]),
             ExcMessage("Particles/Region: need x0 < x1 and y0 < y1."));
         }
+      bodies.parse_parameters(prm);
+      AssertThrow(bodies.empty() || dim == 2,
+                  ExcMessage("Bodies/Number of bodies = " +
+                             std::to_string(bodies.bodies.size()) +
+                             ": bodies need Geometry/Dimension = 2."));
+      AssertThrow(bodies.empty() || region.empty(),
+                  ExcMessage("Bodies/Number of bodies = " +
+                             std::to_string(bodies.bodies.size()) +
+                             " and Particles/Region: the bodies say where the "
+                             "material is; leave Region empty."));
     }
 
 
@@ -251,6 +274,10 @@ namespace psmpm
     bool
     ParticleGenerator<dim>::fills_mesh(const Triangulation<dim> &tria) const
     {
+      // Bodies are taken to leave room around them (a body that happens
+      // to fill the mesh is not worth a geometric test).
+      if (!bodies.bodies.empty())
+        return false;
       if (region.empty())
         return true;
       for (const auto &x : tria.get_vertices())
@@ -269,32 +296,107 @@ namespace psmpm
       const std::function<bool(unsigned int)> &is_owned,
       ParticleSet<dim>                        &particles) const
     {
-      const auto inside = [this](const Point<dim> &p) { return in_region(p); };
-      if constexpr (dim == 1)
+      // One placement for every scene: classify(x) says which body the
+      // candidate point x belongs to (0: the one material of a scene
+      // without Bodies) or -1 for none.
+      std::vector<double> densities{density};
+      const auto          place = [&](const auto &classify) {
+        if constexpr (dim == 1)
+          {
+            (void)tria;
+            check_count(mesh);
+            generate_lines(*this,
+                           mesh,
+                           locator,
+                           densities,
+                           is_owned,
+                           classify,
+                           particles);
+          }
+        else if (mesh.type != Mesh::MeshGenerator<dim>::Type::gmsh)
+          {
+            check_count(mesh);
+            generate_blocks(*this,
+                            mesh,
+                            locator,
+                            densities,
+                            is_owned,
+                            classify,
+                            particles);
+          }
+        else
+          generate_per_cell(*this,
+                            tria,
+                            densities,
+                            is_owned,
+                            classify,
+                            particles);
+      };
+      if (bodies.empty())
         {
-          (void)tria;
-          check_count(mesh);
-          generate_lines(*this,
-                         mesh,
-                         locator,
-                         density,
-                         is_owned,
-                         inside,
-                         particles);
+          place([this](const Point<dim> &p) { return in_region(p) ? 0 : -1; });
+          return;
         }
-      else if (mesh.type != Mesh::MeshGenerator<dim>::Type::gmsh)
+      if constexpr (dim == 2)
         {
-          check_count(mesh);
-          generate_blocks(*this,
-                          mesh,
-                          locator,
-                          density,
-                          is_owned,
-                          inside,
-                          particles);
+          const auto where = [](const Point<2> &p) {
+            return "(" + prm_value(p[0]) + ", " + prm_value(p[1]) + ")";
+          };
+          // The whole boundary must lie in the mesh: a body cut by the
+          // mesh boundary would silently lose material. The outline is
+          // pulled towards the inside by a relative 1e-9 so that a body
+          // flush with the mesh boundary is accepted.
+          for (const Body &body : bodies.bodies)
+            {
+              const double h       = std::sqrt(body.shape.area()) / 64;
+              const auto   outline = body.shape.outline(h);
+              Point<2>     mean;
+              for (const auto &p : outline)
+                mean += p / double(outline.size());
+              for (const auto &p : outline)
+                {
+                  const Point<2> q = p + 1e-9 * (mean - p);
+                  AssertThrow(locator.locate(q) !=
+                                Mesh::CellLocator<2>::invalid,
+                              ExcMessage(body.name() + " (" +
+                                         body.shape.description() +
+                                         ") reaches outside the mesh at " +
+                                         where(p) + "."));
+                }
+            }
+          for (const Body &body : bodies.bodies)
+            densities.push_back(body.density > 0 ? body.density : density);
+          // Counted over every candidate point, owned or not, so that all
+          // ranks reach the same verdict without communication.
+          std::vector<std::uint64_t> count(bodies.bodies.size() + 1, 0);
+          std::string                overlap;
+          place([&](const Point<2> &p) {
+            int found = -1;
+            for (const Body &body : bodies.bodies)
+              if (body.shape.inside(p))
+                {
+                  if (found < 0)
+                    found = body.number;
+                  else if (overlap.empty())
+                    overlap = body.name() + " overlaps Bodies/Body " +
+                              std::to_string(found) +
+                              ": both contain the particle position " +
+                              where(p) + ".";
+                }
+            if (found > 0)
+              ++count[found];
+            return found;
+          });
+          AssertThrow(overlap.empty(), ExcMessage(overlap));
+          for (const Body &body : bodies.bodies)
+            AssertThrow(count[body.number] > 0,
+                        ExcMessage(body.name() + " (" +
+                                   body.shape.description() +
+                                   ") holds no particle: it is smaller than "
+                                   "the particle spacing or falls between "
+                                   "the particle positions."));
+          particles.n_bodies = bodies.bodies.size();
         }
-      else
-        generate_per_cell(*this, tria, density, is_owned, inside, particles);
     }
 
 

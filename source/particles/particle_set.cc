@@ -36,6 +36,7 @@ namespace psmpm
         f(particles.velocity);
         f(particles.stress);
         f(particles.affine);
+        f(particles.body_id);
       }
 
       constexpr unsigned int
@@ -67,7 +68,8 @@ namespace psmpm
                           const unsigned int  new_cell,
                           const Point<dim>   &x,
                           const double        new_volume,
-                          const double        new_density)
+                          const double        new_density,
+                          const unsigned int  body)
     {
       id.push_back(new_id);
       cell.push_back(new_cell);
@@ -80,6 +82,7 @@ namespace psmpm
       velocity.emplace_back();
       stress.emplace_back();
       affine.emplace_back();
+      body_id.push_back(body);
       state.resize(state.size() + n_state(), 0.);
     }
 
@@ -93,9 +96,9 @@ namespace psmpm
                       n_stress_components(dim),
                     "stress is packed by its independent components");
       // id, mass, volume, density; four vectors; stress; state; affine
-      // matrix (last, so that the offsets of the others do not depend on
-      // it).
-      return 4 + 4 * dim + n_stress_components(dim) + n_state() + dim * dim;
+      // matrix (after the others, so that their offsets do not depend on
+      // it); body id.
+      return 4 + 4 * dim + n_stress_components(dim) + n_state() + dim * dim + 1;
     }
 
 
@@ -123,6 +126,7 @@ namespace psmpm
       for (unsigned int d = 0; d < dim; ++d)
         for (unsigned int e = 0; e < dim; ++e)
           buffer.push_back(affine[i][d][e]);
+      buffer.push_back(body_id[i]);
     }
 
 
@@ -164,6 +168,7 @@ namespace psmpm
             for (unsigned int e = 0; e < dim; ++e)
               c[d][e] = next();
           affine.push_back(c);
+          body_id.push_back(static_cast<unsigned int>(next()));
         }
     }
 
@@ -265,6 +270,12 @@ namespace psmpm
       for (const auto &s : state_names)
         names += s + "\n";
       archive.put_text("particles/state_names", names);
+      // Only scenes with Bodies: the checkpoints of the others keep their
+      // entries.
+      if (n_bodies > 0)
+        archive.put_integers("particles/body_id",
+                             std::vector<std::uint64_t>(body_id.begin(),
+                                                        body_id.end()));
     }
 
 
@@ -314,6 +325,13 @@ namespace psmpm
           for (unsigned int e = 0; e < dim; ++e)
             affine[i][d][e] = a[(i * dim + d) * dim + e];
       state = archive.get("particles/state", n * n_state());
+      if (archive.has("particles/body_id"))
+        {
+          const auto &b = archive.get_integers("particles/body_id", n);
+          body_id.assign(b.begin(), b.end());
+        }
+      else
+        body_id.assign(n, 0);
     }
 
 

@@ -295,6 +295,11 @@ namespace psmpm
     {
       std::vector<std::string> names =
         {"id", "cell", "rank", "mass", "volume", "density"};
+      // Scenes without Bodies keep their fields (every particle is in
+      // body 0).
+      const bool with_bodies = particles.n_bodies > 0;
+      if (with_bodies)
+        names.push_back("body_id");
       Ranges             ranges;
       const unsigned int first_displacement = names.size();
       add_vector<dim>("displacement", names, ranges);
@@ -339,6 +344,8 @@ namespace psmpm
           patch.data(3, 0) = particles.mass[i];
           patch.data(4, 0) = particles.volume[i];
           patch.data(5, 0) = particles.density[i];
+          if (with_bodies)
+            patch.data(6, 0) = particles.body_id[i];
           for (unsigned int d = 0; d < dim; ++d)
             {
               patch.data(first_displacement + d, 0) =

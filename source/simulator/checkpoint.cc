@@ -318,6 +318,7 @@ namespace psmpm
         return;
       Particles::ParticleSet<dim> global;
       global.set_state_names(particles.get_state_names());
+      global.n_bodies = particles.n_bodies;
       for (const auto &b : all)
         unpack_with_cells(b, global);
       global.save(archive);
@@ -372,7 +373,10 @@ namespace psmpm
           for (const auto &in : incoming)
             unpack_with_cells(in.second, mine);
         }
-      particles = std::move(mine);
+      // The scene's number of bodies is not particle data.
+      const unsigned int n_bodies = particles.n_bodies;
+      particles                   = std::move(mine);
+      particles.n_bodies          = n_bodies;
     }
 
 

@@ -11,6 +11,7 @@
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
 #include <psmpm/mesh/confinement.h>
+#include <psmpm/postprocess/body_statistics.h>
 #include <psmpm/postprocess/progress.h>
 #include <psmpm/simulator/simulator.h>
 
@@ -341,29 +342,40 @@ namespace psmpm
         }
       // The affine transfers start from the initial velocity gradient
       // (C_p = grad v): fourth-order differences with h = 1e-4 are exact
-      // to round-off for the affine fields they must carry.
-      FunctionParser<dim> velocity(dim, 0., 1e-4);
-      velocity.set_formula(AutoDerivativeFunction<dim>::FourthOrder);
-      try
-        {
-          velocity.initialize(dim == 1 ? "x" : "x,y",
-                              velocity_expression,
-                              constants);
-          for (std::size_t i = 0; i < particles.size(); ++i)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                particles.velocity[i][d] =
-                  velocity.value(particles.position[i], d);
-                particles.affine[i][d] =
-                  velocity.gradient(particles.position[i], d);
-              }
-        }
-      catch (const std::exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("Initial conditions/Velocity = '" +
-                                 velocity_expression + "': " + e.what()));
-        }
+      // to round-off for the affine fields they must carry. Without Bodies
+      // one expression for all particles; with them, each body's own.
+      const auto set_velocity = [&](const std::string &expression,
+                                    const std::string &entry,
+                                    const unsigned int body) {
+        FunctionParser<dim> velocity(dim, 0., 1e-4);
+        velocity.set_formula(AutoDerivativeFunction<dim>::FourthOrder);
+        try
+          {
+            velocity.initialize(dim == 1 ? "x" : "x,y", expression, constants);
+            for (std::size_t i = 0; i < particles.size(); ++i)
+              if (particles.body_id[i] == body)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    particles.velocity[i][d] =
+                      velocity.value(particles.position[i], d);
+                    particles.affine[i][d] =
+                      velocity.gradient(particles.position[i], d);
+                  }
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(entry + " = '" + expression +
+                                   "': " + e.what()));
+          }
+      };
+      const auto &bodies = particle_generator.bodies.bodies;
+      if (bodies.empty())
+        set_velocity(velocity_expression, "Initial conditions/Velocity", 0);
+      for (const auto &body : bodies)
+        set_velocity(body.velocity,
+                     body.name() + "/Initial velocity",
+                     body.number);
       particles.sort_by_cell(state.triangulation.n_active_cells());
     }
 
@@ -471,6 +483,7 @@ namespace psmpm
       Postprocess::EnergyStatistics<dim>::add_columns(e, statistics);
       rotation_statistics.add_columns(rotation_statistics.compute(state),
                                       statistics);
+      Postprocess::BodyStatistics<dim>::add_columns(state, statistics);
       statistics.add_value("cg_iterations", gs.iterations);
       statistics.add_value("condition_number", gs.condition_number);
       statistics.add_value("min_relative_diagonal", gs.min_relative_diagonal);

@@ -9,6 +9,7 @@
 
 #include <psmpm/mesh/cell_locator.h>
 #include <psmpm/mesh/mesh_generator.h>
+#include <psmpm/particles/body.h>
 #include <psmpm/particles/particle_set.h>
 
 #include <functional>
@@ -30,6 +31,13 @@ namespace psmpm
      *
      * Volume = covered measure (area in 2D, length in 1D) / particles in
      * it, mass = density x volume. "Region" limits the material to a box.
+     *
+     * With subsection "Bodies" (2D): the same candidate points, each kept
+     * if it lies in one of the bodies' shapes and given that body's
+     * density and id, so that particles per cell and volumes stay those of
+     * the layout above (a body's boundary cuts through cells; its mass is
+     * its area to within the particle spacing). Bodies must lie in the
+     * mesh, hold a particle and not share one.
      */
     template <int dim>
     class ParticleGenerator
@@ -58,14 +66,16 @@ namespace psmpm
       /// Empty, or the box {x0, x1} (1D) or {x0, y0, x1, y1} (2D).
       std::vector<double> region;
       double              max_particles = 5e7;
+      /// Subsection Bodies (empty: none).
+      Bodies bodies;
 
       /// Refuse particle counts above Maximum number before any mesh is
       /// built (block meshes; every 1D mesh).
       void
       check_count(const Mesh::MeshGenerator<dim> &mesh) const;
 
-      /// Whether every cell of @p tria receives particles: no Region, or a
-      /// Region that contains the whole mesh.
+      /// Whether every cell of @p tria receives particles: no Bodies and
+      /// no Region, or a Region that contains the whole mesh.
       bool
       fills_mesh(const Triangulation<dim> &tria) const;
 

@@ -61,13 +61,15 @@ namespace psmpm
       }
 
       /// Append one particle at @p x in @p cell with zero velocity,
-      /// displacement, stress and state.
+      /// displacement, stress and state, belonging to body @p body (0:
+      /// the scene has no Bodies).
       void
       add(const std::uint64_t id,
           const unsigned int  cell,
           const Point<dim>   &x,
           const double        volume,
-          const double        density);
+          const double        density,
+          const unsigned int  body = 0);
 
       /// The state block of particle @p i (n_state() values).
       double *
@@ -104,8 +106,9 @@ namespace psmpm
        * Every array, in the current order, into @p archive under
        * "particles/" (checkpoints): id and cell (integers), mass, volume,
        * density (one value per particle), the vectors (n x dim), stress and
-       * affine matrix (n x dim^2, row-major) and the state block (n x
-       * n_state(), names in "particles/state_names", one per line).
+       * affine matrix (n x dim^2, row-major), the state block (n x
+       * n_state(), names in "particles/state_names", one per line) and
+       * body_id (integers; only if n_bodies > 0, absent: 0).
        */
       void
       save(Archive &archive) const;
@@ -132,6 +135,12 @@ namespace psmpm
       std::vector<Tensor<2, dim>> affine;
       /// Material state, n_state() per particle, particle-major.
       std::vector<double> state;
+      /// The Bodies entry (1, 2, ...) each particle was made in; 0 when
+      /// the scene has no Bodies.
+      std::vector<unsigned int> body_id;
+      /// Number of bodies of the scene (0: none); decides whether the
+      /// output carries body_id. Not per particle: every rank knows it.
+      unsigned int n_bodies = 0;
 
     private:
       std::vector<std::string> state_names;

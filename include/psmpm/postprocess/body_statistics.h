@@ -1,0 +1,34 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_postprocess_body_statistics_h
+#define psmpm_postprocess_body_statistics_h
+
+#include <deal.II/base/table_handler.h>
+
+#include <psmpm/simulator/state.h>
+
+namespace psmpm
+{
+  namespace Postprocess
+  {
+    using namespace dealii;
+
+    /**
+     * Centre of mass of every body of a scene with Bodies: columns
+     * body<k>_x (and body<k>_y in 2D), k = 1, 2, ... Whether bodies that
+     * met have separated again is read off these (the two-disk impact).
+     * Nothing for a scene without Bodies, so that its statistics.txt keeps
+     * its columns. Collective (sums over the ranks).
+     */
+    template <int dim>
+    class BodyStatistics
+    {
+    public:
+      static void
+      add_columns(const Simulator::State<dim> &state, TableHandler &statistics);
+    };
+  } // namespace Postprocess
+} // namespace psmpm
+
+#endif
