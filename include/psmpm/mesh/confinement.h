@@ -21,8 +21,10 @@ namespace psmpm
      * fixed: boundary id b with face normal n is closed if n_d = 0 (to
      * round-off) for every direction d in which b is not fixed. Material
      * that fills such a mesh cannot leave it, so no cell can empty
-     * unless the material tears apart inside: the automatic mass matrix
-     * is then the consistent one (doc/transfers.md "Defaults").
+     * unless the material tears apart inside or thin cells empty as it
+     * moves: the automatic mass matrix is then partially lumped, the
+     * consistent matrix where no cell empties (doc/transfers.md
+     * "Defaults").
      * @p fixed[d]: the boundary ids with velocity component d fixed.
      */
     template <int dim>
