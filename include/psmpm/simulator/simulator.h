@@ -184,6 +184,17 @@ namespace psmpm
       {
         return monitor.get_failure();
       }
+      /// The mass matrix and transfer in use (`automatic` resolved).
+      const std::string &
+      get_mass_matrix_name() const
+      {
+        return grid_parameters.type;
+      }
+      const std::string &
+      get_transfer_name() const
+      {
+        return transfer_name;
+      }
       const State<dim> &
       get_state() const
       {
