@@ -5,6 +5,8 @@
 
 #include <psmpm/postprocess/body_statistics.h>
 
+#include <limits>
+
 namespace psmpm
 {
   namespace Postprocess
@@ -40,6 +42,28 @@ namespace psmpm
             const double m = sums[b * (dim + 1)];
             statistics.add_value(column,
                                  m > 0 ? sums[b * (dim + 1) + 1 + d] / m : 0.);
+            statistics.set_scientific(column, true);
+            statistics.set_precision(column, 8);
+          }
+      // Per body the largest coordinate of its particles: the run-out
+      // (front) and the height of a collapsing column.
+      std::vector<double> front(n * dim, -std::numeric_limits<double>::max());
+      for (std::size_t i = 0; i < particles.size(); ++i)
+        {
+          const unsigned int b = particles.body_id[i];
+          if (b == 0 || b > n)
+            continue;
+          for (unsigned int d = 0; d < dim; ++d)
+            front[(b - 1) * dim + d] =
+              std::max(front[(b - 1) * dim + d], particles.position[i][d]);
+        }
+      Utilities::MPI::max(front, state.comm, front);
+      for (unsigned int b = 0; b < n; ++b)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const std::string column =
+              "body" + std::to_string(b + 1) + suffix[d] + "_max";
+            statistics.add_value(column, front[b * dim + d]);
             statistics.set_scientific(column, true);
             statistics.set_precision(column, 8);
           }
