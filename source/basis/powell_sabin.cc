@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/fe/fe_simplex_p.h>
 
+#include <psmpm/base/cross.h>
 #include <psmpm/base/registry.h>
 #include <psmpm/basis/powell_sabin.h>
 #include <psmpm/mesh/triangle_geometry.h>
@@ -48,11 +49,6 @@ namespace psmpm
         return s.str();
       }
 
-      double
-      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
-      {
-        return a[0] * b[1] - a[1] * b[0];
-      }
 
       /// The half-plane n . x <= c (n a unit outward normal).
       struct Line

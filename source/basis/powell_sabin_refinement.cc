@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
+#include <psmpm/base/cross.h>
 #include <psmpm/basis/powell_sabin_refinement.h>
 #include <psmpm/mesh/triangle_geometry.h>
 
@@ -22,12 +23,6 @@ namespace psmpm
         s.precision(17);
         s << "vertex " << index << " at (" << p[0] << ", " << p[1] << ")";
         return s.str();
-      }
-
-      double
-      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
-      {
-        return a[0] * b[1] - a[1] * b[0];
       }
     } // namespace
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/cross.h>
 #include <psmpm/base/format.h>
 #include <psmpm/particles/body.h>
 
@@ -16,12 +17,6 @@ namespace psmpm
   {
     namespace
     {
-      double
-      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
-      {
-        return a[0] * b[1] - a[1] * b[0];
-      }
-
       /// Closed segments [a, b] and [c, d] share a point.
       bool
       segments_meet(const Point<2> &a,

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/base/archive.h>
+#include <psmpm/base/cross.h>
 #include <psmpm/postprocess/rotation_statistics.h>
 
 #include <cmath>
@@ -12,15 +13,6 @@ namespace psmpm
 {
   namespace Postprocess
   {
-    namespace
-    {
-      double
-      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
-      {
-        return a[0] * b[1] - a[1] * b[0];
-      }
-    } // namespace
-
     template <int dim>
     typename RotationStatistics<dim>::Values
     RotationStatistics<dim>::compute(const Simulator::State<dim> &state)

@@ -172,14 +172,13 @@ namespace psmpm
       // The choice for a closed, filled mesh is made once the mesh is
       // known (setup_space_and_grid); its transfer is created here, where
       // its parameters are.
-      closed_mass_matrix.clear();
+      closed_rule = mass_automatic && !grid_moves;
       closed_transfer_name.clear();
       closed_transfer.reset();
-      if (mass_automatic && !grid_moves)
+      if (closed_rule)
         {
-          closed_mass_matrix   = "partially lumped";
           closed_transfer_name = transfer_automatic ?
-                                   space->default_transfer(closed_mass_matrix) :
+                                   space->default_transfer("partially lumped") :
                                    transfer_name;
           if (closed_transfer_name != transfer_name)
             closed_transfer =
@@ -294,17 +293,16 @@ namespace psmpm
       // Powell-Sabin: displacement error 3.7e-3 against 9.1e-2 with
       // lumped mass and APIC at the same CPU time (doc/transfers.md
       // "Defaults").
-      if (!closed_mass_matrix.empty() &&
-          particle_generator.fills_mesh(state.triangulation) &&
+      if (closed_rule && particle_generator.fills_mesh(state.triangulation) &&
           Mesh::is_closed<dim>(state.triangulation, fixed))
         {
-          grid_parameters.type = closed_mass_matrix;
+          grid_parameters.type = "partially lumped";
           if (closed_transfer)
             transfer = std::move(closed_transfer);
           transfer_name = closed_transfer_name;
         }
-      closed_mass_matrix.clear();
-      state.grid = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
+      closed_rule = false;
+      state.grid  = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
                                                              *state.space,
                                                              state.dof_handler,
                                                              comm);

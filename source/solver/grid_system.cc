@@ -277,6 +277,42 @@ namespace psmpm
           }
     }
 
+    namespace
+    {
+      /// Value-array positions @p slots (n x n, row-major) of the entries
+      /// of a dense block over the local relevant DoFs @p dofs, in a
+      /// FillComplete'd Epetra matrix's CRS arrays @p offsets and
+      /// @p columns (sorted per row); @p row and @p column map a local
+      /// relevant DoF to its local row (-1: another rank's, slot -1) and
+      /// column.
+      void
+      block_slots(const int              *offsets,
+                  const int              *columns,
+                  const std::vector<int> &row,
+                  const std::vector<int> &column,
+                  const unsigned int     *dofs,
+                  const unsigned int      n,
+                  int                    *slots)
+      {
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const int r = row[dofs[k]];
+            for (unsigned int l = 0; l < n; ++l)
+              {
+                slots[k * n + l] = -1;
+                if (r < 0)
+                  continue;
+                const int *begin = columns + offsets[r];
+                const int *end   = columns + offsets[r + 1];
+                const int *p = std::lower_bound(begin, end, column[dofs[l]]);
+                AssertThrow(p != end && *p == column[dofs[l]],
+                            ExcInternalError());
+                slots[k * n + l] = static_cast<int>(p - columns);
+              }
+          }
+      }
+    } // namespace
+
     template <int dim>
     void
     GridSystem<dim>::compute_matrix_slots()
@@ -304,25 +340,15 @@ namespace psmpm
           matrix_column[l] = A.ColMap().LID(static_cast<int>(g));
         }
       const unsigned int n = dofs_per_cell;
-      cell_slots.assign(owned_cell_indices.size() * n * n, -1);
+      cell_slots.resize(owned_cell_indices.size() * n * n);
       for (unsigned int o = 0; o < owned_cell_indices.size(); ++o)
-        {
-          const unsigned int *dofs =
-            &cell_dof_indices[owned_cell_indices[o] * n];
-          for (unsigned int k = 0; k < n; ++k)
-            if (const int r = matrix_row[dofs[k]]; r >= 0)
-              for (unsigned int l = 0; l < n; ++l)
-                {
-                  const int *begin = columns + offsets[r];
-                  const int *end   = columns + offsets[r + 1];
-                  const int *p =
-                    std::lower_bound(begin, end, matrix_column[dofs[l]]);
-                  AssertThrow(p != end && *p == matrix_column[dofs[l]],
-                              ExcInternalError());
-                  cell_slots[(o * n + k) * n + l] =
-                    static_cast<int>(p - columns);
-                }
-        }
+        block_slots(offsets,
+                    columns,
+                    matrix_row,
+                    matrix_column,
+                    &cell_dof_indices[owned_cell_indices[o] * n],
+                    n,
+                    &cell_slots[o * n * n]);
     }
 
     template <int dim>
@@ -338,19 +364,14 @@ namespace psmpm
       int                    *offsets, *columns;
       double                 *values;
       A.ExtractCrsDataPointers(offsets, columns, values);
-      slots.assign(n * n, -1);
-      for (unsigned int k = 0; k < n; ++k)
-        if (const int r = matrix_row[dofs[k]]; r >= 0)
-          for (unsigned int l = 0; l < n; ++l)
-            {
-              const int *begin = columns + offsets[r];
-              const int *end   = columns + offsets[r + 1];
-              const int *p =
-                std::lower_bound(begin, end, matrix_column[dofs[l]]);
-              AssertThrow(p != end && *p == matrix_column[dofs[l]],
-                          ExcInternalError());
-              slots[k * n + l] = static_cast<int>(p - columns);
-            }
+      slots.resize(n * n);
+      block_slots(offsets,
+                  columns,
+                  matrix_row,
+                  matrix_column,
+                  dofs,
+                  n,
+                  slots.data());
     }
 
     namespace

@@ -256,10 +256,12 @@ namespace psmpm
       typename Solver::GridSystem<dim>::Parameters grid_parameters;
       std::string                                  basis_name;
       std::string                                  transfer_name;
-      /// Mass matrix and transfer that `automatic` takes on a closed,
-      /// filled mesh (setup_space_and_grid() decides; empty: not
-      /// automatic or the grid moves).
-      std::string                               closed_mass_matrix;
+      /// Whether `automatic` takes partially lumped mass with
+      /// closed_transfer (nullptr: the transfer chosen already) named
+      /// closed_transfer_name if the mesh turns out closed and filled
+      /// (parse_parameters() says if the rule applies: automatic mass, a
+      /// fixed grid; setup_space_and_grid() decides).
+      bool                                      closed_rule = false;
       std::string                               closed_transfer_name;
       std::string                               velocity_expression;
       std::string                               velocity_constants;
