@@ -11,7 +11,10 @@
 
 #include "tests.h"
 
+#include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -71,5 +74,42 @@ check_particles_in_cells(const psmpm::Simulator::Simulator<2> &solver)
     }
   return {worst, agree};
 }
+
+/// The rows of @p directory/statistics.txt by column name.
+struct StatisticsTable
+{
+  explicit StatisticsTable(const std::string &directory)
+  {
+    std::ifstream in(directory + "/statistics.txt");
+    std::string   line;
+    while (std::getline(in, line))
+      if (line.rfind("# ", 0) == 0)
+        names.push_back(line.substr(line.find(':') + 2));
+      else if (!line.empty())
+        {
+          std::istringstream  row(line);
+          std::vector<double> values;
+          for (std::string v; row >> v;)
+            values.push_back(std::atof(v.c_str()));
+          rows.push_back(values);
+        }
+  }
+
+  /// Column @p name of every row (NaN where a row is short; empty if
+  /// there is no such column).
+  std::vector<double>
+  column(const std::string &name) const
+  {
+    std::vector<double> c;
+    for (unsigned int k = 0; k < names.size(); ++k)
+      if (names[k] == name)
+        for (const auto &r : rows)
+          c.push_back(k < r.size() ? r[k] : std::nan(""));
+    return c;
+  }
+
+  std::vector<std::string>         names;
+  std::vector<std::vector<double>> rows;
+};
 
 #endif

@@ -243,11 +243,11 @@ end
           }
       }
 
-      /// Relative mesh files are taken relative to the parameter file.
+      /// Relative mesh and body geometry files (entry File of the current
+      /// subsection) are taken relative to the parameter file.
       void
-      resolve_mesh_file(ParameterHandler &prm, const std::string &prm_file)
+      resolve_file_entry(ParameterHandler &prm, const std::string &prm_file)
       {
-        prm.enter_subsection("Mesh");
         const std::filesystem::path file = prm.get("File");
         if (!file.empty() && file.is_relative() && !prm_file.empty())
           {
@@ -255,6 +255,21 @@ end
               std::filesystem::path(prm_file).parent_path() / file;
             if (std::filesystem::exists(candidate))
               prm.set("File", candidate.string());
+          }
+      }
+
+      void
+      resolve_mesh_file(ParameterHandler &prm, const std::string &prm_file)
+      {
+        prm.enter_subsection("Mesh");
+        resolve_file_entry(prm, prm_file);
+        prm.leave_subsection();
+        prm.enter_subsection("Bodies");
+        for (unsigned int b = 1; b <= Particles::Bodies::max_bodies; ++b)
+          {
+            prm.enter_subsection("Body " + std::to_string(b));
+            resolve_file_entry(prm, prm_file);
+            prm.leave_subsection();
           }
         prm.leave_subsection();
       }

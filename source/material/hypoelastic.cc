@@ -62,19 +62,20 @@ namespace psmpm
           // Closed forms rather than K - 2G/3 and K + 4G/3: with nu = 0
           // they give lambda = 0 and lambda + 2G = E exactly, so that the
           // update is bit for bit the 1D bar of the thesis.
-          const double nu     = this->poisson_ratio;
-          const double E      = this->youngs_modulus;
-          const double scale  = E / ((1 + nu) * (1 - 2 * nu));
-          const double lambda = scale * nu;
-          const double p_wave = scale * (1 - nu);
+          const double       nu     = this->poisson_ratio;
+          const double       E      = this->youngs_modulus;
+          const double       scale  = E / ((1 + nu) * (1 - 2 * nu));
+          const double       lambda = scale * nu;
+          const double       p_wave = scale * (1 - nu);
+          const unsigned int stride = this->state_stride();
           for (unsigned int i = 0; i < n; ++i)
             {
               const double de      = dL[i][0][0];
               double      &sigma   = stress[i][0][0];
-              double      &lateral = state[2 * i];
+              double      &lateral = state[stride * i];
               sigma += p_wave * de - de * sigma;
               lateral += lambda * de - de * lateral;
-              state[2 * i + 1] += de;
+              state[stride * i + 1] += de;
               volume_ratio[i] = 1 + de;
             }
         }
@@ -84,14 +85,15 @@ namespace psmpm
           // per call: same operations, same rounding.
           const double lambda =
             this->bulk_modulus() - 2. / 3 * this->shear_modulus();
-          const double two_g = 2 * this->shear_modulus();
+          const double       two_g  = 2 * this->shear_modulus();
+          const unsigned int stride = this->state_stride();
           for (unsigned int i = 0; i < n; ++i)
             {
               const SymmetricTensor<2, 2> de = symmetrize(dL[i]);
               const double dw = 0.5 * (dL[i][0][1] - dL[i][1][0]); // w_xy
               const double tr = trace(de);
               SymmetricTensor<2, 2> &s         = stress[i];
-              double *const          block     = state + 4 * i;
+              double *const          block     = state + stride * i;
               double                &stress_zz = block[0];
 
               SymmetricTensor<2, 2> ds;
@@ -120,8 +122,9 @@ namespace psmpm
                                      const double                  *state,
                                      double *energy) const
     {
-      const double nu = this->poisson_ratio;
-      const double E  = this->youngs_modulus;
+      const double       nu     = this->poisson_ratio;
+      const double       E      = this->youngs_modulus;
+      const unsigned int stride = this->state_stride();
       for (unsigned int i = 0; i < n; ++i)
         {
           const SymmetricTensor<2, dim> &s = stress[i];
@@ -129,14 +132,14 @@ namespace psmpm
             {
               // Normal stresses (sigma_xx, lateral, lateral), no shear.
               const double sxx = s[0][0];
-              const double lat = state[2 * i];
+              const double lat = state[stride * i];
               energy[i]        = (sxx * sxx + lat * lat + lat * lat -
                            2 * nu * (sxx * lat + lat * lat + lat * sxx)) /
                           (2 * E);
             }
           else
             {
-              const double szz = state[4 * i];
+              const double szz = state[stride * i];
               energy[i] =
                 (s[0][0] * s[0][0] + s[1][1] * s[1][1] + szz * szz -
                  2 * nu * (s[0][0] * s[1][1] + s[1][1] * szz + szz * s[0][0]) +

@@ -36,11 +36,12 @@ namespace psmpm
                double                  *state,
                double                  *volume_ratio) const override
         {
-          const double nu     = this->poisson_ratio;
-          const double E      = this->youngs_modulus;
-          const double scale  = E / ((1 + nu) * (1 - 2 * nu));
-          const double lambda = scale * nu;
-          const double two_g  = E / (1 + nu);
+          const double       nu     = this->poisson_ratio;
+          const double       E      = this->youngs_modulus;
+          const double       scale  = E / ((1 + nu) * (1 - 2 * nu));
+          const double       lambda = scale * nu;
+          const double       two_g  = E / (1 + nu);
+          const unsigned int stride = this->state_stride();
           for (unsigned int i = 0; i < n; ++i)
             {
               const SymmetricTensor<2, dim> de = symmetrize(dL[i]);
@@ -48,14 +49,14 @@ namespace psmpm
               if constexpr (dim == 1)
                 {
                   stress[i][0][0] += (lambda + two_g) * de[0][0];
-                  state[2 * i] += lambda * tr; // lateral stresses
-                  state[2 * i + 1] += de[0][0];
+                  state[stride * i] += lambda * tr; // lateral stresses
+                  state[stride * i + 1] += de[0][0];
                 }
               else
                 {
                   stress[i] +=
                     lambda * tr * unit_symmetric_tensor<dim>() + two_g * de;
-                  double *const block = state + 4 * i;
+                  double *const block = state + stride * i;
                   block[0] += lambda * tr; // sigma_zz (plane strain)
                   block[1] += de[0][0];
                   block[2] += de[1][1];

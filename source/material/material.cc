@@ -47,6 +47,16 @@ namespace psmpm
     Material<dim>::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
+      declare_entries(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Material<dim>::declare_entries(ParameterHandler &prm)
+    {
       prm.declare_entry("Model",
                         "hypoelastic",
                         Patterns::Selection(model_selection()),
@@ -74,7 +84,6 @@ namespace psmpm
       // the selection (declaring an entry twice is harmless).
       MaterialRegistry<1>::instance().declare_parameters(prm);
       MaterialRegistry<2>::instance().declare_parameters(prm);
-      prm.leave_subsection();
     }
 
 
@@ -87,9 +96,7 @@ namespace psmpm
       std::unique_ptr<Material<dim>> material;
       try
         {
-          material = MaterialRegistry<dim>::instance().create(prm.get("Model"),
-                                                              "Material/Model");
-          material->parse_parameters(prm);
+          material = create(prm, "Material");
         }
       catch (...)
         {
@@ -104,6 +111,19 @@ namespace psmpm
 
 
     template <int dim>
+    std::unique_ptr<Material<dim>>
+    Material<dim>::create(ParameterHandler &prm, const std::string &path)
+    {
+      auto material = MaterialRegistry<dim>::instance().create(prm.get("Model"),
+                                                               path + "/Model");
+      material->path = path;
+      material->parse_parameters(prm);
+      return material;
+    }
+
+
+
+    template <int dim>
     void
     Material<dim>::parse_parameters(ParameterHandler &prm)
     {
@@ -111,18 +131,18 @@ namespace psmpm
       youngs_modulus = prm.get_double("Young's modulus");
       poisson_ratio  = prm.get_double("Poisson's ratio");
       AssertThrow(density > 0,
-                  ExcMessage("Material/Density = " + prm_value(density) +
+                  ExcMessage(path + "/Density = " + prm_value(density) +
                              ": must be positive."));
       AssertThrow(youngs_modulus > 0,
-                  ExcMessage(
-                    "Material/Young's modulus = " + prm_value(youngs_modulus) +
-                    ": must be positive."));
+                  ExcMessage(path +
+                             "/Young's modulus = " + prm_value(youngs_modulus) +
+                             ": must be positive."));
       AssertThrow(poisson_ratio > -1 && poisson_ratio < 0.5,
-                  ExcMessage(
-                    "Material/Poisson's ratio = " + prm_value(poisson_ratio) +
-                    ": must satisfy -1 < nu < 0.5 (0.5 is "
-                    "incompressible, which this explicit "
-                    "formulation cannot represent)."));
+                  ExcMessage(path +
+                             "/Poisson's ratio = " + prm_value(poisson_ratio) +
+                             ": must satisfy -1 < nu < 0.5 (0.5 is "
+                             "incompressible, which this explicit "
+                             "formulation cannot represent)."));
     }
 
 
@@ -131,9 +151,10 @@ namespace psmpm
     void
     Material<dim>::initialize(const unsigned int n, double *state) const
     {
-      const unsigned int size = n * n_state();
-      for (unsigned int i = 0; i < size; ++i)
-        state[i] = 0;
+      const unsigned int size = n_state(), s = state_stride();
+      for (unsigned int p = 0; p < n; ++p)
+        for (unsigned int k = 0; k < size; ++k)
+          state[p * s + k] = 0;
     }
 
 
@@ -154,9 +175,10 @@ namespace psmpm
                                   const SymmetricTensor<2, dim> *stress,
                                   const double                  *state) const
     {
-      double c = 0;
+      double             c = 0;
+      const unsigned int s = state_stride();
       for (unsigned int p = 0; p < n; ++p)
-        c = std::max(c, wave_speed(stress[p], state + p * n_state()));
+        c = std::max(c, wave_speed(stress[p], state + p * s));
       return c;
     }
 

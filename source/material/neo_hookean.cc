@@ -67,10 +67,11 @@ namespace psmpm
     void
     NeoHookean<dim>::initialize(const unsigned int n, double *state) const
     {
+      const unsigned int s = this->state_stride();
       for (unsigned int p = 0; p < n; ++p)
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            state[p * dim * dim + i * dim + j] = (i == j ? 1. : 0.);
+            state[p * s + i * dim + j] = (i == j ? 1. : 0.);
     }
 
 
@@ -83,12 +84,13 @@ namespace psmpm
                             double                  *state,
                             double                  *volume_ratio) const
     {
-      const double mu     = this->shear_modulus();
-      const double lambda = this->lame_lambda();
-      const double nan    = std::numeric_limits<double>::quiet_NaN();
+      const double       mu     = this->shear_modulus();
+      const double       lambda = this->lame_lambda();
+      const double       nan    = std::numeric_limits<double>::quiet_NaN();
+      const unsigned int s      = this->state_stride();
       for (unsigned int p = 0; p < n; ++p)
         {
-          double *const F = state + p * dim * dim;
+          double *const F = state + p * s;
 
           // dF = A^{-1} B with A = I - dL/2, B = I + dL/2.
           Tensor<2, dim> A, B;
@@ -154,11 +156,12 @@ namespace psmpm
                                     const double *state,
                                     double       *energy) const
     {
-      const double mu     = this->shear_modulus();
-      const double lambda = this->lame_lambda();
+      const double       mu     = this->shear_modulus();
+      const double       lambda = this->lame_lambda();
+      const unsigned int s      = this->state_stride();
       for (unsigned int p = 0; p < n; ++p)
         {
-          const double *const F = state + p * dim * dim;
+          const double *const F = state + p * s;
           // I1 - 3 = |F|^2 - dim: the out-of-plane ones cancel.
           double I1_minus_3 = -double(dim);
           for (unsigned int k = 0; k < dim * dim; ++k)
@@ -179,11 +182,11 @@ namespace psmpm
                                     const SymmetricTensor<2, dim> *stress,
                                     const double                  *state) const
     {
-      double c = 0;
+      // The stride once per batch: n_state() builds the list of names.
+      double             c = 0;
+      const unsigned int s = this->state_stride();
       for (unsigned int p = 0; p < n; ++p)
-        c = std::max(c,
-                     NeoHookean<dim>::wave_speed(stress[p],
-                                                 state + p * this->n_state()));
+        c = std::max(c, NeoHookean<dim>::wave_speed(stress[p], state + p * s));
       return c;
     }
 

@@ -120,6 +120,30 @@ namespace psmpm
                 }
               return in;
             }
+          case Type::gmsh:
+            {
+              if (p[0] < box_lower[0] || p[0] > box_upper[0] ||
+                  p[1] < box_lower[1] || p[1] > box_upper[1])
+                return false;
+              // The same crossing test over the outline's edges, which
+              // need not form one loop (holes, several pieces).
+              bool in = false;
+              for (const auto &e : edges)
+                {
+                  const Point<2> &a = e[0], &b = e[1];
+                  if (cross(b - a, p - a) == 0 &&
+                      std::min(a[0], b[0]) <= p[0] &&
+                      p[0] <= std::max(a[0], b[0]) &&
+                      std::min(a[1], b[1]) <= p[1] &&
+                      p[1] <= std::max(a[1], b[1]))
+                    return true;
+                  if ((a[1] > p[1]) != (b[1] > p[1]) &&
+                      p[0] <
+                        (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
+                    in = !in;
+                }
+              return in;
+            }
         }
       return false;
     }
@@ -144,6 +168,8 @@ namespace psmpm
                 a += cross(vertices[i], vertices[(i + 1) % n]);
               return std::abs(a) / 2;
             }
+          case Type::gmsh:
+            return gmsh_area;
         }
       return 0;
     }
@@ -154,6 +180,20 @@ namespace psmpm
     Shape::outline(const double spacing) const
     {
       std::vector<Point<2>> corners;
+      if (type == Type::gmsh)
+        {
+          std::vector<Point<2>> points;
+          for (const auto &[a, b] : edges)
+            {
+              const unsigned int n =
+                std::max(1u,
+                         static_cast<unsigned int>(
+                           std::ceil(a.distance(b) / spacing)));
+              for (unsigned int k = 0; k < n; ++k)
+                points.push_back(a + (double(k) / n) * (b - a));
+            }
+          return points;
+        }
       if (type == Type::disk)
         {
           const unsigned int n =
@@ -251,6 +291,9 @@ namespace psmpm
                 v.insert(v.end(), {p[0], p[1]});
               return "Shape = polygon, Vertices = " + list(v);
             }
+          case Type::gmsh:
+            return "Shape = gmsh, File = " + file +
+                   ", Physical surfaces = " + surfaces;
         }
       return "";
     }
@@ -271,9 +314,10 @@ namespace psmpm
           prm.enter_subsection("Body " + std::to_string(b));
           prm.declare_entry("Shape",
                             "rectangle",
-                            Patterns::Selection("rectangle|disk|polygon"),
-                            "rectangle (Corners), disk (Center, Radius) or "
-                            "polygon (Vertices).");
+                            Patterns::Selection("rectangle|disk|polygon|gmsh"),
+                            "rectangle (Corners), disk (Center, Radius), "
+                            "polygon (Vertices) or gmsh (File, Physical "
+                            "surfaces).");
           prm.declare_entry("Corners",
                             "",
                             Patterns::List(Patterns::Double(), 0, 4, ","),
@@ -293,12 +337,33 @@ namespace psmpm
                             "Polygon: x0, y0, x1, y1, ... in order, at least "
                             "3 vertices, no edges crossing (a simple "
                             "polygon); the last is joined to the first.");
+          prm.declare_entry("File",
+                            "",
+                            Patterns::Anything(),
+                            "Gmsh: an ASCII .msh file (format 2 or 4) whose "
+                            "cells make the body; relative paths are taken "
+                            "relative to the parameter file. Its mesh is "
+                            "only a geometry: particles are placed as for "
+                            "the other shapes, in the cells of Mesh.");
+          prm.declare_entry("Physical surfaces",
+                            "",
+                            Patterns::Anything(),
+                            "Gmsh: names or tags of the physical surfaces "
+                            "that form the body, separated by commas; empty: "
+                            "every cell of the file.");
+          prm.declare_entry("Material",
+                            "0",
+                            Patterns::Integer(0, max_materials),
+                            "The body's material (model and constants): 0 "
+                            "for subsection Material, j for subsection "
+                            "Materials/Material j.");
           // Unbounded, so that a negative value is reported with the
           // body's name rather than by the parser.
           prm.declare_entry("Density",
                             "0",
                             Patterns::Double(),
-                            "Density of this body; 0: Material/Density.");
+                            "Density of this body; 0: the density of its "
+                            "material.");
           prm.declare_entry("Initial velocity",
                             "0; 0",
                             Patterns::Anything(),
@@ -353,6 +418,17 @@ namespace psmpm
                                      ": must be positive."));
               body.shape = Shape::disk(Point<2>(c[0], c[1]), r);
             }
+          else if (shape == "gmsh")
+            {
+              const std::string file = prm.get("File");
+              AssertThrow(!file.empty(),
+                          ExcMessage(name + "/File: a gmsh body needs the "
+                                            "name of a .msh file."));
+              body.shape = Shape::from_gmsh(file,
+                                            Utilities::split_string_list(
+                                              prm.get("Physical surfaces")),
+                                            name);
+            }
           else
             {
               const auto v = numbers("Vertices");
@@ -376,11 +452,12 @@ namespace psmpm
                           ExcMessage(name + "/Vertices = " + list(v) +
                                      ": the polygon has no area."));
             }
-          body.density = prm.get_double("Density");
-          AssertThrow(body.density >= 0 && std::isfinite(body.density),
-                      ExcMessage(name +
-                                 "/Density = " + prm_value(body.density) +
-                                 ": must be positive (0: Material/Density)."));
+          body.material = prm.get_integer("Material");
+          body.density  = prm.get_double("Density");
+          AssertThrow(
+            body.density >= 0 && std::isfinite(body.density),
+            ExcMessage(name + "/Density = " + prm_value(body.density) +
+                       ": must be positive (0: the density of its material)."));
           body.velocity = prm.get("Initial velocity");
           prm.leave_subsection();
           bodies.push_back(body);

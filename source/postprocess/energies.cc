@@ -13,10 +13,7 @@ namespace psmpm
     {
       const auto &particles = state.particles;
       energy_density.resize(particles.size());
-      state.material->energy_density(particles.size(),
-                                     particles.stress.data(),
-                                     particles.state.data(),
-                                     energy_density.data());
+      state.materials.energy_density(particles, energy_density.data());
       Energies<dim> e;
       for (std::size_t p = 0; p < particles.size(); ++p)
         {

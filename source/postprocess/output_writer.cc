@@ -299,7 +299,10 @@ namespace psmpm
       // body 0).
       const bool with_bodies = particles.n_bodies > 0;
       if (with_bodies)
-        names.push_back("body_id");
+        {
+          names.push_back("body_id");
+          names.push_back("material_id");
+        }
       Ranges             ranges;
       const unsigned int first_displacement = names.size();
       add_vector<dim>("displacement", names, ranges);
@@ -345,7 +348,10 @@ namespace psmpm
           patch.data(4, 0) = particles.volume[i];
           patch.data(5, 0) = particles.density[i];
           if (with_bodies)
-            patch.data(6, 0) = particles.body_id[i];
+            {
+              patch.data(6, 0) = particles.body_id[i];
+              patch.data(7, 0) = particles.body_material[particles.body_id[i]];
+            }
           for (unsigned int d = 0; d < dim; ++d)
             {
               patch.data(first_displacement + d, 0) =

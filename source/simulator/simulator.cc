@@ -53,7 +53,7 @@ namespace psmpm
       // variant without a 1D instance is rejected when created.
       Mesh::MeshGenerator<2>::declare_parameters(prm);
       Particles::ParticleGenerator<2>::declare_parameters(prm);
-      Material::Material<2>::declare_parameters(prm);
+      Material::MaterialSet<2>::declare_parameters(prm);
       Postprocess::Reference<2>::declare_parameters(prm);
       Solver::GridSystem<2>::Parameters::declare_parameters(prm);
       TransferScheme<2>::declare_parameters(prm);
@@ -133,7 +133,11 @@ namespace psmpm
       mesh_generator.parse_parameters(prm);
       particle_generator.parse_parameters(prm);
       particle_generator.check_count(mesh_generator);
-      state.material = Material::Material<dim>::create(prm);
+      state.materials.parse_parameters(prm, particle_generator.bodies);
+      // A body's own Density, or else its material's, is what its
+      // particles get (the generator reads Body::density).
+      for (auto &body : particle_generator.bodies.bodies)
+        body.density = state.materials.of_body(body.number).density;
       grid_parameters.parse_parameters(prm);
       prm.enter_subsection("Basis");
       basis_name = prm.get("Type");
@@ -216,7 +220,7 @@ namespace psmpm
       prm.leave_subsection();
 
       reference = Postprocess::Reference<dim>::create(prm,
-                                                      *state.material,
+                                                      state.materials.primary(),
                                                       mesh_generator.length,
                                                       mesh_generator.height,
                                                       state.gravity,
@@ -306,7 +310,10 @@ namespace psmpm
                                                              *state.space,
                                                              state.dof_handler,
                                                              comm);
-      state.grid->reinit(fixed, state.material->density);
+      // The heaviest material sets the scale of the nearly-empty thresholds:
+      // a lighter body's full cells then count as partly filled (more rows
+      // lumped, stable), never a heavier body's nearly empty ones as full.
+      state.grid->reinit(fixed, state.materials.max_density());
     }
 
     template <int dim>
@@ -320,17 +327,18 @@ namespace psmpm
       for (const auto &cell : state.triangulation.active_cell_iterators())
         state.cell_owner[cell->active_cell_index()] = cell->subdomain_id();
       auto &particles = state.particles;
-      particles.set_state_names(state.material->state_names());
+      particles.set_state_names(state.materials.state_names());
+      particles.body_material = state.materials.material_ids();
       particle_generator.generate(
         mesh_generator,
         state.triangulation,
         state.locator,
-        state.material->density,
+        state.materials.primary().density,
         [this, rank](const unsigned int c) {
           return state.cell_owner[c] == rank;
         },
         particles);
-      state.material->initialize(particles.size(), particles.state.data());
+      state.materials.initialize(particles);
 
       std::map<std::string, double> constants{{"pi", numbers::PI}};
       for (const auto &c : split(velocity_constants))
@@ -978,7 +986,7 @@ namespace psmpm
       summary.set("basis", state.space->name());
       summary.set("mass_matrix", grid_parameters.type);
       summary.set("transfer", transfer_name);
-      summary.set("material", state.material->name());
+      summary.set("material", state.materials.model_names());
       rotation_statistics.fill_summary(summary);
       if (reference)
         {

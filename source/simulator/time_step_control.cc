@@ -65,7 +65,7 @@ namespace psmpm
     TimeStepControl::initialize(const State<dim> &state)
     {
       h_min              = state.locator.minimum_height();
-      const double c_p   = state.material->p_wave_speed();
+      const double c_p   = state.materials.max_p_wave_speed();
       const double bound = h_min / c_p;
       factor = state.space->stability_factor(!state.grid->uses_matrix());
       if (fixed_step > 0)
@@ -102,7 +102,7 @@ namespace psmpm
           // that moves with the material (OTM) can compress below it.
           // Not an error (the run may still be stable, and the monitors
           // stop it if not), but said once, in the log and summary.json.
-          const double c_p = state.material->p_wave_speed();
+          const double c_p = state.materials.max_p_wave_speed();
           if (check_time_step && moving_grid_warning.empty() &&
               fixed_step > grid_h_min / c_p)
             moving_grid_warning =
@@ -119,11 +119,9 @@ namespace psmpm
       double      speed     = 0;
       for (std::size_t p = 0; p < particles.size(); ++p)
         speed = std::max(speed, particles.velocity[p].norm_square());
-      const double c = state.material->max_wave_speed(particles.size(),
-                                                      particles.stress.data(),
-                                                      particles.state.data());
+      const double c = state.materials.max_wave_speed(particles);
       const double c_max =
-        Utilities::MPI::max(std::max(c, state.material->p_wave_speed()) +
+        Utilities::MPI::max(std::max(c, state.materials.max_p_wave_speed()) +
                               std::sqrt(speed),
                             state.comm);
       time_step     = courant_number * factor * grid_h_min / c_max;

@@ -131,11 +131,7 @@ namespace psmpm
     {
       auto &particles = state.particles;
       volume_ratio.resize(particles.size());
-      state.material->update(particles.size(),
-                             increments.data(),
-                             particles.stress.data(),
-                             particles.state.data(),
-                             volume_ratio.data());
+      state.materials.update(particles, increments.data(), volume_ratio.data());
       for (std::size_t p = 0; p < particles.size(); ++p)
         {
           particles.volume[p] *= volume_ratio[p];

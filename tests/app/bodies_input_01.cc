@@ -1,9 +1,11 @@
-// Hostile Bodies: a non-positive radius, a body outside the mesh or
-// partly outside it, a body too small to hold a particle, overlapping
-// bodies, polygons with fewer than 3 vertices or crossing edges, a negative
-// density and swapped rectangle corners each end with exit code 2 and a
-// message that names the body's entry, the offending value and the
-// parameter file; nothing is written. The two-disk scene is valid.
+// Hostile Bodies: a body naming a material with invalid constants, Gmsh
+// bodies without a file, with a missing or binary file, an unknown
+// physical surface or one without cells, a non-positive radius, a body outside
+// the mesh or partly outside it, a body too small to hold a particle,
+// overlapping bodies, polygons with fewer than 3 vertices or crossing edges, a
+// negative density and swapped rectangle corners each end with exit code 2 and
+// a message that names the body's entry, the offending value and the parameter
+// file; nothing is written. The two-disk scene is valid.
 #include "../app_tests.h"
 
 #include <filesystem>
@@ -25,7 +27,13 @@ main(int argc, char **argv)
     " subsection Body 1\n  set Shape = disk\n  set Center = 0.25, 0.25\n"
     "  set Radius = 0.15\n end\n"
     " subsection Body 2\n";
-  const std::string tail = " end\nend\n";
+  // Materials/Material 2 is invalid: only a body that names it fails.
+  const std::string tail = " end\nend\n"
+                           "subsection Materials\n subsection Material 2\n"
+                           "  set Poisson's ratio = 0.5\n end\nend\n";
+  const std::string ring =
+    std::string(PSMPM_SOURCE_DIR) + "/prm/geometry/ring.msh";
+  std::ofstream("binary.msh") << "$MeshFormat\n4.1 1 8\n$EndMeshFormat\n";
   struct Case
   {
     std::string              name;
@@ -68,7 +76,28 @@ main(int argc, char **argv)
     {"bad velocity",
      "  set Shape = disk\n  set Center = 0.7, 0.7\n  set Radius = 0.1\n"
      "  set Initial velocity = 1 +; 0\n",
-     {"Bodies/Body 2/Initial velocity", "1 +"}}};
+     {"Bodies/Body 2/Initial velocity", "1 +"}},
+    {"material with bad constants",
+     "  set Shape = disk\n  set Center = 0.7, 0.7\n  set Radius = 0.1\n"
+     "  set Material = 2\n",
+     {"Materials/Material 2/Poisson's ratio = 0.5"}},
+    {"gmsh body without a file",
+     "  set Shape = gmsh\n",
+     {"Bodies/Body 2/File", ".msh"}},
+    {"gmsh body, missing file",
+     "  set Shape = gmsh\n  set File = no_such_ring.msh\n",
+     {"Bodies/Body 2/File = no_such_ring.msh", "cannot open"}},
+    {"gmsh body, binary file",
+     "  set Shape = gmsh\n  set File = binary.msh\n",
+     {"Bodies/Body 2/File = binary.msh", "binary"}},
+    {"gmsh body, unknown surface",
+     "  set Shape = gmsh\n  set File = " + ring +
+       "\n  set Physical surfaces = core\n",
+     {"Bodies/Body 2/Physical surfaces", "'core'", "outer (1)"}},
+    {"gmsh body, surface without cells",
+     "  set Shape = gmsh\n  set File = " + ring +
+       "\n  set Physical surfaces = 7\n",
+     {"Bodies/Body 2/Physical surfaces", "(tag 7) has no cells"}}};
   std::string screen, message;
   for (const auto &c : cases)
     {
@@ -86,7 +115,9 @@ main(int argc, char **argv)
         }
     }
 
-  // The same head with a valid polygon, and the two-disk scene.
+  // The same head with a valid polygon and with a Gmsh ring (whose
+  // Material 1 has the defaults; the invalid Material 2 is not read), and
+  // the two-disk scene.
   std::ofstream("bodies.prm")
     << head
     << "  set Shape = polygon\n"
@@ -94,6 +125,14 @@ main(int argc, char **argv)
     << tail;
   int code = run_app({"bodies.prm", "--validate"}, screen, message);
   out << "valid polygon: exit code " << code << std::endl;
+  if (code != 0)
+    out << message << std::endl;
+  std::ofstream("bodies.prm")
+    << head
+    << "  set Shape = gmsh\n  set File = " + ring + "\n  set Material = 1\n"
+    << tail;
+  code = run_app({"bodies.prm", "--validate"}, screen, message);
+  out << "valid gmsh ring: exit code " << code << std::endl;
   if (code != 0)
     out << message << std::endl;
   code = run_app({std::string(PSMPM_SOURCE_DIR) + "/prm/two_disks.prm",

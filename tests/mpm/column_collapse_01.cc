@@ -10,7 +10,6 @@
 #include "../mpm_tests.h"
 
 #include <filesystem>
-#include <sstream>
 
 int
 main(int argc, char **argv)
@@ -30,7 +29,8 @@ main(int argc, char **argv)
       const std::string dir = "run-" + basis;
       std::filesystem::create_directories(dir);
       const auto status = solver->run(dir);
-      out << basis << ": " << psmpm::Simulator::status_name(status) << std::endl;
+      out << basis << ": " << psmpm::Simulator::status_name(status)
+          << std::endl;
       PSMPM_CHECK(out, status == psmpm::Simulator::Status::completed);
       double m = 0, x_max = -1e300, y_max = -1e300;
       for (std::size_t i = 0; i < p.size(); ++i)
@@ -42,24 +42,10 @@ main(int argc, char **argv)
       PSMPM_CHECK(out, m == m0);
       PSMPM_CHECK(out, x_max > 0.55);
       PSMPM_CHECK(out, y_max < 0.8);
-      // The last row of statistics.txt and its column names.
-      std::ifstream            in(dir + "/statistics.txt");
-      std::vector<std::string> names;
-      std::string              line, last;
-      while (std::getline(in, line))
-        if (line.rfind("# ", 0) == 0)
-          names.push_back(line.substr(line.find(':') + 2));
-        else if (!line.empty())
-          last = line;
-      std::istringstream  row(last);
-      std::vector<double> values;
-      for (std::string v; row >> v;)
-        values.push_back(std::atof(v.c_str()));
-      auto column = [&](const std::string &name) {
-        for (unsigned int k = 0; k < names.size(); ++k)
-          if (names[k] == name && k < values.size())
-            return values[k];
-        return std::nan("");
+      const StatisticsTable statistics(dir);
+      const auto            column = [&](const std::string &name) {
+        const auto c = statistics.column(name);
+        return c.empty() ? std::nan("") : c.back();
       };
       PSMPM_CHECK(out, std::abs(column("body1_x_max") - x_max) < 1e-7);
       PSMPM_CHECK(out, std::abs(column("body1_y_max") - y_max) < 1e-7);

@@ -129,10 +129,10 @@ namespace
         for (std::size_t i = 0; i < p.size(); ++i)
           vmax = std::max(vmax, p.velocity[i].norm());
         const double c =
-          std::max(state.material->max_wave_speed(p.size(),
-                                                  p.stress.data(),
-                                                  p.state.data()),
-                   state.material->p_wave_speed()) +
+          std::max(state.materials.primary().max_wave_speed(p.size(),
+                                                            p.stress.data(),
+                                                            p.state.data()),
+                   state.materials.primary().p_wave_speed()) +
           vmax;
         h         = moved_minimum_height(solver);
         deviation = std::max(deviation, std::abs(dt / (Cf * h / c) - 1));

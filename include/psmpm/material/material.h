@@ -51,12 +51,22 @@ namespace psmpm
       static void
       declare_parameters(ParameterHandler &prm);
 
+      /// The entries of declare_parameters() in the current subsection
+      /// (also used for Materials/Material 1..8).
+      static void
+      declare_entries(ParameterHandler &prm);
+
       /// Create the model named in Material/Model and parse it (the
       /// subsection is entered here).
       static std::unique_ptr<Material<dim>>
       create(ParameterHandler &prm);
 
-      /// Read the common constants (subsection "Material" entered);
+      /// Create and parse the model of the current subsection, whose path
+      /// (e.g. "Materials/Material 2") prefixes every message.
+      static std::unique_ptr<Material<dim>>
+      create(ParameterHandler &prm, const std::string &path);
+
+      /// Read the common constants (the material's subsection entered);
       /// models with entries of their own override it and call this first.
       virtual void
       parse_parameters(ParameterHandler &prm);
@@ -69,22 +79,44 @@ namespace psmpm
       virtual std::vector<std::string>
       state_names() const = 0;
 
+      /// Number of state scalars (allocates: call it once per batch, never
+      /// per particle).
       unsigned int
       n_state() const
       {
         return state_names().size();
       }
 
-      /// Initial state of @p n particles (n * n_state() values, default
-      /// zero; models with a deformation gradient set the identity).
+      /**
+       * Distance between two particles' state blocks in the arrays passed
+       * to the batch functions: n_state() unless set_state_stride() made it
+       * larger (several models sharing one particle array, each in its own
+       * columns; see MaterialSet). The i-th particle's block starts at
+       * state + i * state_stride().
+       */
+      unsigned int
+      state_stride() const
+      {
+        return stride != 0 ? stride : n_state();
+      }
+
+      void
+      set_state_stride(const unsigned int s)
+      {
+        stride = s;
+      }
+
+      /// Initial state of @p n particles (the first n_state() values of
+      /// each block; default zero, models with a deformation gradient set
+      /// the identity).
       virtual void
       initialize(const unsigned int n, double *state) const;
 
       /**
        * Update @p n particles: @p dL[i] = dt grad v at particle i (L_ij =
        * dv_i/dx_j); @p stress[i] and the i-th state block
-       * (state + i * n_state()) are updated in place and @p volume_ratio[i]
-       * receives V_new / V_old.
+       * (state + i * state_stride()) are updated in place and
+       * @p volume_ratio[i] receives V_new / V_old.
        */
       virtual void
       update(const unsigned int       n,
@@ -143,6 +175,11 @@ namespace psmpm
       double density        = 1;
       double youngs_modulus = 100;
       double poisson_ratio  = 0;
+      /// The subsection the constants came from, for messages.
+      std::string path = "Material";
+
+    private:
+      unsigned int stride = 0; ///< 0: n_state()
     };
 
     template <int dim>

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,10 +18,11 @@ namespace psmpm
     using namespace dealii;
 
     /**
-     * A 2D region that holds material: a rectangle, a disk or a simple
-     * polygon. One class with a switch rather than a hierarchy: the
-     * generator asks inside() for every candidate point, and the three
-     * tests are a few flops each.
+     * A 2D region that holds material: a rectangle, a disk, a simple
+     * polygon, or the triangles of physical surfaces in a Gmsh geometry
+     * file. One class with a switch rather than a hierarchy: the generator
+     * asks inside() for every candidate point, and the tests are a few
+     * flops each (a Gmsh shape: one per edge of its outline).
      */
     class Shape
     {
@@ -29,7 +31,8 @@ namespace psmpm
       {
         rectangle,
         disk,
-        polygon
+        polygon,
+        gmsh
       };
 
       /// Rectangle from Corners = x0, y0, x1, y1.
@@ -41,6 +44,17 @@ namespace psmpm
       /// first.
       static Shape
       polygon(const std::vector<Point<2>> &vertices);
+      /**
+       * The union of the cells of an ASCII Gmsh file (msh 2 or 4) whose
+       * physical surface is in @p surfaces (names from $PhysicalNames or
+       * numeric tags; empty: every cell). Holes and several pieces are
+       * allowed. @p entry ("Bodies/Body 2") prefixes every error message.
+       * Defined in gmsh_shape.cc.
+       */
+      static Shape
+      from_gmsh(const std::string              &file,
+                const std::vector<std::string> &surfaces,
+                const std::string              &entry);
 
       /// Points on the boundary count as inside (closed shapes), so that
       /// a rectangle flush with a block edge keeps the particles on it.
@@ -69,6 +83,13 @@ namespace psmpm
       std::vector<Point<2>> vertices; ///< rectangle: lower, upper corner
       Point<2>              center;
       double                radius = 0;
+      /// Gmsh: the outline (edges of exactly one selected cell), its
+      /// bounding box, the cells' area, the file and surfaces as given.
+      std::vector<std::array<Point<2>, 2>> edges;
+      Point<2>                             box_lower, box_upper;
+      double                               gmsh_area = 0;
+      std::string                          file;
+      std::string                          surfaces;
     };
 
     /// One entry of subsection Bodies: its shape and initial state.
@@ -83,7 +104,9 @@ namespace psmpm
 
       unsigned int number = 0; ///< 1-based, also the particles' body_id
       Shape        shape;
-      double       density = 0;
+      /// 0: subsection Material, j: subsection Materials/Material j.
+      unsigned int material = 0;
+      double       density  = 0;
       /// Initial velocity, one expression per component separated by ';',
       /// in x, y with Initial conditions/Function constants.
       std::string velocity;
@@ -100,6 +123,8 @@ namespace psmpm
     {
     public:
       static constexpr unsigned int max_bodies = 8;
+      /// Materials/Material 1 ... this (MaterialSet::max_materials).
+      static constexpr unsigned int max_materials = 8;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -141,6 +141,9 @@ namespace psmpm
       /// Number of bodies of the scene (0: none); decides whether the
       /// output carries body_id. Not per particle: every rank knows it.
       unsigned int n_bodies = 0;
+      /// Material id (0: subsection Material, j: Materials/Material j) of
+      /// each body id, for output; set by the simulator.
+      std::vector<unsigned int> body_material{0};
 
     private:
       std::vector<std::string> state_names;

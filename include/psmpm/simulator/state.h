@@ -8,7 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <psmpm/basis/space.h>
-#include <psmpm/material/material.h>
+#include <psmpm/material/material_set.h>
 #include <psmpm/mesh/cell_locator.h>
 #include <psmpm/particles/particle_set.h>
 #include <psmpm/solver/grid_system.h>
@@ -45,7 +45,7 @@ namespace psmpm
       std::unique_ptr<Basis::Space<dim>>       space;
       Mesh::CellLocator<dim>                   locator;
       std::unique_ptr<Solver::GridSystem<dim>> grid;
-      std::unique_ptr<Material::Material<dim>> material;
+      Material::MaterialSet<dim>               materials;
       Particles::ParticleSet<dim>              particles;
       Tensor<1, dim>                           gravity;
       std::vector<unsigned int>                cell_owner; ///< MPI rank

@@ -1,0 +1,182 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <psmpm/particles/body.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace psmpm
+{
+  namespace Particles
+  {
+    namespace
+    {
+      /// "$PhysicalNames" entries of dimension 2: name -> tag.
+      std::map<std::string, int>
+      surface_names(std::istream &in)
+      {
+        std::map<std::string, int> names;
+        std::string                line;
+        while (std::getline(in, line))
+          if (line.rfind("$PhysicalNames", 0) == 0)
+            {
+              unsigned int n = 0;
+              in >> n;
+              for (unsigned int i = 0; i < n && in; ++i)
+                {
+                  int         entity_dim = 0, tag = 0;
+                  std::string rest;
+                  in >> entity_dim >> tag;
+                  std::getline(in, rest);
+                  const auto a = rest.find('"'), b = rest.rfind('"');
+                  if (entity_dim == 2 && a != std::string::npos && b > a)
+                    names[rest.substr(a + 1, b - a - 1)] = tag;
+                }
+              break;
+            }
+        return names;
+      }
+
+      std::string
+      known(const std::map<std::string, int> &names, const std::set<int> &tags)
+      {
+        std::string s;
+        for (const auto &[name, tag] : names)
+          s +=
+            (s.empty() ? "" : ", ") + name + " (" + std::to_string(tag) + ")";
+        for (const int tag : tags)
+          s += (s.empty() ? "" : ", ") + std::to_string(tag);
+        return s.empty() ? "none" : s;
+      }
+    } // namespace
+
+
+
+    Shape
+    Shape::from_gmsh(const std::string              &file,
+                     const std::vector<std::string> &surfaces,
+                     const std::string              &entry)
+    {
+      const std::string where = entry + "/File = " + file;
+      std::ifstream     in(file);
+      AssertThrow(in.good(),
+                  ExcMessage(where + ": cannot open the geometry file."));
+      {
+        std::string line, version;
+        int         file_type = 0;
+        std::getline(in, line);
+        AssertThrow(line.rfind("$MeshFormat", 0) == 0,
+                    ExcMessage(where + ": not a Gmsh .msh file (it does not "
+                                       "start with $MeshFormat)."));
+        in >> version >> file_type;
+        AssertThrow(file_type == 0,
+                    ExcMessage(where + ": a binary Gmsh file (format " +
+                               version +
+                               "); psmpm reads ASCII .msh files only (save it "
+                               "again without -bin)."));
+      }
+      in.clear();
+      in.seekg(0);
+      const auto names = surface_names(in);
+      in.clear();
+      in.seekg(0);
+
+      Triangulation<2> tria;
+      GridIn<2>        grid_in;
+      grid_in.attach_triangulation(tria);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false,
+                      ExcMessage(where + ": not a readable Gmsh mesh (" +
+                                 e.what() + ")."));
+        }
+      std::set<int> tags_present;
+      for (const auto &cell : tria.active_cell_iterators())
+        tags_present.insert(cell->material_id());
+
+      // The selected tags: names first, then numbers.
+      std::set<int> selected;
+      for (const auto &s : surfaces)
+        {
+          if (names.count(s))
+            selected.insert(names.at(s));
+          else
+            {
+              std::size_t used = 0;
+              int         tag  = -1;
+              try
+                {
+                  tag = std::stoi(s, &used);
+                }
+              catch (...)
+                {
+                  used = 0;
+                }
+              AssertThrow(used == s.size() && used > 0,
+                          ExcMessage(entry + "/Physical surfaces: '" + s +
+                                     "' is not a physical surface of " + file +
+                                     " (known: " + known(names, {}) + ")."));
+              selected.insert(tag);
+            }
+          const int tag = names.count(s) ? names.at(s) : std::stoi(s);
+          AssertThrow(
+            tags_present.count(tag),
+            ExcMessage(entry + "/Physical surfaces: '" + s + "' (tag " +
+                       std::to_string(tag) + ") has no cells in " + file +
+                       " (tags with cells: " + known({}, tags_present) + ")."));
+        }
+
+      // The outline: edges of exactly one selected cell, by vertex index.
+      Shape shape;
+      shape.type     = Type::gmsh;
+      shape.file     = file;
+      shape.surfaces = surfaces.empty() ? std::string("(all)") : "";
+      for (std::size_t i = 0; i < surfaces.size(); ++i)
+        shape.surfaces += (i ? ", " : "") + surfaces[i];
+      std::map<std::pair<unsigned int, unsigned int>, std::array<Point<2>, 2>>
+        once;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (selected.empty() || selected.count(cell->material_id()))
+          {
+            shape.gmsh_area += cell->measure();
+            for (const unsigned int f : cell->face_indices())
+              {
+                const auto         face = cell->face(f);
+                const unsigned int a    = face->vertex_index(0),
+                                   b    = face->vertex_index(1);
+                const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+                const auto found = once.find(key);
+                if (found != once.end())
+                  once.erase(found);
+                else
+                  once[key] = {{face->vertex(0), face->vertex(1)}};
+              }
+          }
+      AssertThrow(shape.gmsh_area > 0,
+                  ExcMessage(where + ": the selected cells have no area."));
+      shape.box_lower = shape.box_upper = once.begin()->second[0];
+      for (const auto &[key, e] : once)
+        {
+          shape.edges.push_back(e);
+          for (const auto &p : e)
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                shape.box_lower[d] = std::min(shape.box_lower[d], p[d]);
+                shape.box_upper[d] = std::max(shape.box_upper[d], p[d]);
+              }
+        }
+      return shape;
+    }
+  } // namespace Particles
+} // namespace psmpm
