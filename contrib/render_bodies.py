@@ -20,10 +20,7 @@ from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFun
 directory, field = sys.argv[1], sys.argv[2]
 low, high, png = float(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
 times = [float(t) for t in sys.argv[6:]]
-size = [600, 600]
-
 view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = size
 view.Background = [1, 1, 1]
 try:
     view.UseColorPaletteForBackground = 0
@@ -32,6 +29,13 @@ except AttributeError:
 view.OrientationAxesVisibility = 0
 
 grid = PVDReader(FileName=os.path.join(directory, "grid.pvd"))
+# Panel and dots sized by the domain, so that a 3 x 1.25 m column and a
+# unit square both fill their panels.
+grid.UpdatePipeline(times[0] if times else 0)
+x0, x1, y0, y1 = grid.GetDataInformation().GetBounds()[:4]
+width = x1 - x0
+size = [600, int(600 * (y1 - y0) / width) + 160]
+view.ViewSize = size
 g = Show(grid, view)
 g.SetRepresentationType("Wireframe")
 g.AmbientColor = g.DiffuseColor = [0.75, 0.75, 0.75]
@@ -39,7 +43,7 @@ g.AmbientColor = g.DiffuseColor = [0.75, 0.75, 0.75]
 particles = PVDReader(FileName=os.path.join(directory, "particles.pvd"))
 dots = Glyph(Input=particles, GlyphType="Sphere")
 dots.ScaleArray = ["POINTS", "No scale array"]
-dots.ScaleFactor = 0.012
+dots.ScaleFactor = 0.012 * width
 dots.GlyphMode = "All Points"
 d = Show(dots, view)
 ColorBy(d, ("POINTS", field, "Magnitude") if field == "velocity" else ("POINTS", field))
@@ -69,7 +73,7 @@ for k, time in enumerate(times):
 
 # One image: the panels in a row (vtk's own PNG reader and append filter,
 # so that pvbatch needs no further Python packages).
-from vtkmodules.vtkImagingCore import vtkImageAppend
+from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 row = vtkImageAppend()
 row.SetAppendAxis(0)
