@@ -50,7 +50,7 @@ make_reference(const std::string                      &prm_file,
   prm.leave_subsection();
   return psmpm::Postprocess::Reference<dim>::create(
     prm,
-    *solver.get_state().material,
+    solver.get_state().materials.primary(),
     length,
     0.,
     Tensor<1, dim>());
