@@ -10,8 +10,8 @@
 // every VTU field is there (tensors as components). A run resumed from
 // its checkpoint after a kill rewrites particles.xdmf as the uninterrupted
 // run has it, removes particle HDF5 files of later steps and writes the
-// same final file. A file that cannot be written ends the run with exit
-// code 8 naming it; hdf5 in 1D is bad input.
+// same final file; resuming it with vtu output is refused. A file that cannot
+// be written ends the run with exit code 8 naming it; hdf5 in 1D is bad input.
 #include "../checkpoint_tests.h"
 #include "../vtu_tests.h"
 #include "../xdmf_tests.h"
@@ -262,6 +262,16 @@ main(int argc, char **argv)
                                   "hdf5_resumed/" +
                                   Checkpoint::file_name(last_step)))
                 .empty());
+
+  // The series is of one format: resuming with the other is refused.
+  code = run_app(with({"--set", "Output directory=hdf5_resumed", "--resume"}),
+                 screen,
+                 message);
+  out << "resumed with vtu: exit code " << code << std::endl;
+  PSMPM_CHECK(out, code == psmpm::App::bad_input);
+  PSMPM_CHECK(out,
+              message.find("Output/Particle format: 'hdf5' -> 'vtu'") !=
+                std::string::npos);
 
   // A directory in the way of the first file: exit code 8 naming it, and
   // no series that names a missing file.
