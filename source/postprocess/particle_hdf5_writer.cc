@@ -39,11 +39,16 @@ namespace psmpm
       /**
        * One output of the temporal collection: the particles as a
        * Polyvertex grid (one vertex per element) with every field as a
-       * node attribute, the layout of deal.II's XDMFEntry for
-       * 0-dimensional patches.
+       * node attribute, the layout that deal.II 9.4's XDMFEntry writes for
+       * 0-dimensional patches. We write it ourselves because XDMFEntry
+       * prints the time with 6 digits (close outputs of a long run would
+       * share a time), DataOutInterface::create_xdmf_entry() takes the
+       * fields from rank 0's DataOutFilter (none if rank 0 holds no
+       * particle) and write_xdmf_file() needs a DataOutInterface and does
+       * not write atomically.
        */
       void
-      write_grid(
+      write_xdmf_grid(
         std::ostream                                            &out,
         const double                                             time,
         const std::string                                       &file,
@@ -204,7 +209,7 @@ namespace psmpm
             << "    <Grid Name=\"particles\" GridType=\"Collection\" "
             << "CollectionType=\"Temporal\">\n";
         for (const auto &r : records)
-          write_grid(out, r.time, r.file, r.n_points, r.fields);
+          write_xdmf_grid(out, r.time, r.file, r.n_points, r.fields);
         out << "    </Grid>\n"
             << "  </Domain>\n"
             << "</Xdmf>\n";
