@@ -243,7 +243,6 @@ namespace psmpm
       : directory(directory)
       , comm(comm)
       , subdivisions(subdivisions)
-      , particle_format(particle_format)
     {
       AssertThrow(subdivisions >= 1,
                   ExcMessage("psmpm: Output/Subdivisions must be >= 1."));
@@ -277,9 +276,10 @@ namespace psmpm
         "vtu: one VTU piece per MPI rank and output, a .pvtu record and the "
         "series particles.pvd. hdf5 (2D only): one file particles-<step>.h5 "
         "per output for all ranks and the series particles.xdmf (ParaView: "
-        "XDMF reader), fewer and larger files that are quicker to write for "
-        "large runs; tensors (stress) are written as their components. The "
-        "grid output is VTU either way.");
+        "XDMF reader): one file per output whatever the number of ranks, "
+        "but uncompressed, about 6 times larger and 4 times slower to write "
+        "on one node (doc/getting_started.md); tensors (stress) are written "
+        "as their components. The grid output is VTU either way.");
       prm.leave_subsection();
     }
 

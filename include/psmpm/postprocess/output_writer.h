@@ -140,14 +140,14 @@ namespace psmpm
         const std::string                                 &name,
         const std::vector<std::pair<double, std::string>> &records) const;
 
-      std::string    directory;
-      MPI_Comm       comm;
-      unsigned int   subdivisions;
-      ParticleFormat particle_format;
-      /// Set for ParticleFormat::hdf5.
-      std::unique_ptr<ParticleHdf5Writer>         hdf5;
+      std::string                                 directory;
+      MPI_Comm                                    comm;
+      unsigned int                                subdivisions;
       std::vector<std::pair<double, std::string>> particle_records;
       std::vector<std::pair<double, std::string>> grid_records;
+      /// The particle writer of ParticleFormat::hdf5 (then the VTU
+      /// particle_records stay empty); nullptr for vtu.
+      std::unique_ptr<ParticleHdf5Writer> hdf5;
     };
   } // namespace Postprocess
 } // namespace psmpm
