@@ -49,7 +49,8 @@ namespace psmpm
       written_by_psmpm(const std::string &name)
       {
         static const std::regex series(
-          "(particles|grid)(-[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu)|\\.pvd)");
+          "(particles|grid)(-[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu)|\\.pvd)|"
+          "particles(-[0-9]+\\.h5|\\.xdmf)");
         static const std::regex fixed(
           "statistics\\.txt|summary\\.json|parameters\\.prm|log\\.txt|"
           "tracked_particle\\.txt|projection\\.vtu|mesh\\.vtu|"

@@ -36,8 +36,16 @@ namespace psmpm
       // points of its own); a statistics row of about 400 bytes per step.
       const double s =
         subdivisions > 0 ? subdivisions : (state.space->degree() == 1 ? 1 : 4);
-      const double per_output =
-        100. * size.n_particles + 100. * size.n_cells * std::max(1., s * s);
+      // HDF5 particle output is uncompressed doubles: 2 coordinates, a
+      // 4-byte cell, 7 scalars, 2 vectors of 3, the dim x dim stress and
+      // the material state.
+      const double per_particle =
+        particle_format == Postprocess::ParticleFormat::hdf5 ?
+          4. + 8. * (2 + 7 + 6 + dim * dim +
+                     state.particles.get_state_names().size()) :
+          100.;
+      const double per_output = per_particle * size.n_particles +
+                                100. * size.n_cells * std::max(1., s * s);
       size.output_bytes = size.n_outputs * per_output + 400. * size.steps;
       return size;
     }

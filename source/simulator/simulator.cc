@@ -233,12 +233,19 @@ namespace psmpm
       output_interval = prm.get_integer("Interval");
       error_interval  = prm.get_integer("Error interval");
       subdivisions    = prm.get_integer("Subdivisions");
+      particle_format = Postprocess::OutputWriter<dim>::parse_particle_format(
+        prm.get("Particle format"));
       tracked_point =
         Utilities::string_to_double(split(prm.get("Tracked point")));
       prm.leave_subsection();
       AssertThrow(tracked_point.empty() || tracked_point.size() == dim,
                   ExcMessage("Output/Tracked point must be empty or have " +
                              std::to_string(dim) + " coordinate(s)."));
+      // HDF5 (and XDMF) store points in 2 or 3 coordinates only.
+      AssertThrow(particle_format == Postprocess::ParticleFormat::vtu ||
+                    dim >= 2,
+                  ExcMessage("Output/Particle format = hdf5 needs "
+                             "Geometry/Dimension = 2; use vtu in 1D."));
 
       monitor.parse_parameters(prm);
       checkpoint.parse_parameters(prm);
@@ -590,7 +597,10 @@ namespace psmpm
       const unsigned int s =
         subdivisions > 0 ? subdivisions : (state.space->degree() == 1 ? 1 : 4);
       writer =
-        std::make_unique<Postprocess::OutputWriter<dim>>(directory, comm, s);
+        std::make_unique<Postprocess::OutputWriter<dim>>(directory,
+                                                         comm,
+                                                         s,
+                                                         particle_format);
       if (reference)
         {
           error_norms =

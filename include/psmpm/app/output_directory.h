@@ -18,16 +18,16 @@ namespace psmpm
     /**
      * The output directory of a run. Policy: the directory is created if
      * needed; the files an earlier psmpm run wrote into it (VTU/PVTU/PVD
-     * series, statistics.txt, summary.json, parameters.prm, log.txt,
-     * tracked_particle.txt, checkpoints and leftover *.tmp; regular files
-     * only) are removed before the new run writes anything, other files
-     * are left alone. A resumed run (--resume) keeps them: it continues
-     * that run's files from its newest checkpoint; only leftover *.tmp
-     * files (of a run killed while writing) are removed. A lock file
-     * (psmpm.lock, with the process id and host) refuses a second run into the
-     * same directory while the first one lives; a lock left by a process that
-     * no longer exists on this host is taken over. The lock is removed by the
-     * destructor.
+     * series, the particle HDF5/XDMF series, statistics.txt, summary.json,
+     * parameters.prm, log.txt, tracked_particle.txt, checkpoints and leftover
+     * *.tmp; regular files only) are removed before the new run writes
+     * anything, other files are left alone. A resumed run (--resume) keeps
+     * them: it continues that run's files from its newest checkpoint; only
+     * leftover *.tmp files (of a run killed while writing) are removed. A lock
+     * file (psmpm.lock, with the process id and host) refuses a second run into
+     * the same directory while the first one lives; a lock left by a process
+     * that no longer exists on this host is taken over. The lock is removed by
+     * the destructor.
      */
     class OutputDirectory
     {

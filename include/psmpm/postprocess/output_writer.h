@@ -11,7 +11,9 @@
 
 #include <psmpm/basis/space.h>
 #include <psmpm/particles/particle_set.h>
+#include <psmpm/postprocess/particle_hdf5_writer.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,10 +26,22 @@ namespace psmpm
   {
     using namespace dealii;
 
+    /// How particles are written (`Output/Particle format`).
+    enum class ParticleFormat
+    {
+      /// One VTU piece per rank, a .pvtu per output, particles.pvd.
+      vtu,
+      /// One HDF5 file per output for all ranks, particles.xdmf
+      /// (ParticleHdf5Writer; 2D only).
+      hdf5
+    };
+
     /**
      * VTU output that ParaView opens: one piece per rank, a .pvtu per
      * step and a .pvd series each for particles ("particles.pvd") and grid
-     * ("grid.pvd") in the output directory.
+     * ("grid.pvd") in the output directory. With ParticleFormat::hdf5 the
+     * particles go into one HDF5 file per output and the series
+     * "particles.xdmf" instead (ParticleHdf5Writer); the grid stays VTU.
      *
      * Grid fields are evaluated through the Space on a lattice of
      * `subdivisions` sub-cells per cell edge, so the same code serves P1
@@ -45,13 +59,19 @@ namespace psmpm
     {
     public:
       /// @p subdivisions: sub-cells per cell edge of the grid output (>= 1).
-      OutputWriter(const std::string &directory,
-                   MPI_Comm           comm,
-                   const unsigned int subdivisions);
+      OutputWriter(const std::string   &directory,
+                   MPI_Comm             comm,
+                   const unsigned int   subdivisions,
+                   const ParticleFormat particle_format = ParticleFormat::vtu);
 
-      /// Declare "Subdivisions" in subsection "Output".
+      /// Declare "Subdivisions" and "Particle format" in subsection
+      /// "Output".
       static void
       declare_parameters(ParameterHandler &prm);
+
+      /// The format named by @p name ("vtu" or "hdf5"; "Particle format").
+      static ParticleFormat
+      parse_particle_format(const std::string &name);
 
       /**
        * One point per particle with the fields id, cell, rank, mass,
@@ -97,17 +117,19 @@ namespace psmpm
         return subdivisions;
       }
 
-      /// The .pvd records so far (checkpoints).
+      /// The .pvd records so far and, for hdf5, the .xdmf records
+      /// (checkpoints).
       void
       save(Archive &archive) const;
       void
       load(const Archive &archive);
 
       /**
-       * After load(): rewrite particles.pvd and grid.pvd from the records
-       * and remove the VTU/PVTU files of steps after @p step, which a run
-       * that went on after its checkpoint wrote (rank 0; collective in
-       * that every rank must call it). Throws ExcWriteFailed.
+       * After load(): rewrite particles.pvd (particles.xdmf for hdf5) and
+       * grid.pvd from the records and remove the VTU/PVTU (and particle
+       * HDF5) files of steps after @p step, which a run that went on after
+       * its checkpoint wrote (rank 0; collective in that every rank must
+       * call it). Throws ExcWriteFailed.
        */
       void
       restore_files(const unsigned int step) const;
@@ -123,6 +145,9 @@ namespace psmpm
       unsigned int                                subdivisions;
       std::vector<std::pair<double, std::string>> particle_records;
       std::vector<std::pair<double, std::string>> grid_records;
+      /// The particle writer of ParticleFormat::hdf5 (then the VTU
+      /// particle_records stay empty); nullptr for vtu.
+      std::unique_ptr<ParticleHdf5Writer> hdf5;
     };
   } // namespace Postprocess
 } // namespace psmpm

@@ -270,6 +270,9 @@ namespace psmpm
       unsigned int                              error_interval  = 1;
       unsigned int                              subdivisions    = 0;
       std::vector<double>                       tracked_point;
+      /// Output/Particle format.
+      Postprocess::ParticleFormat particle_format =
+        Postprocess::ParticleFormat::vtu;
 
       // Components.
       Checkpoint                                         checkpoint;
