@@ -14,6 +14,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <psmpm/basis/space.h>
+#include <psmpm/solver/dense_cholesky.h>
 #include <psmpm/solver/mass_strategy.h>
 
 #include <array>
@@ -54,6 +55,9 @@ namespace psmpm
         unsigned int max_iterations = 1000;
         std::string  preconditioner = "jacobi";
         double       threshold      = 0.05;
+        /// Serial systems with at most this many DoFs are solved by a
+        /// dense Cholesky factorization instead of CG (0: never).
+        unsigned int direct_size = 1000;
         /// Fictitious mass fraction alpha of the stabilised strategies
         /// (Mass matrix/Stabilization).
         double stabilization = 1;
@@ -372,8 +376,16 @@ namespace psmpm
       unsigned int                                          generation = 0;
       std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
       std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
-      TrilinosWrappers::MPI::Vector                         lumped; // owned
-      TrilinosWrappers::MPI::Vector writable; // owned + writable ghosts
+      /// Direct solves (Parameters::direct_size): whether this run may use
+      /// them, and per component whether this step's matrix was factored.
+      bool direct = false;
+      /// Scratch of solve() and solve_consistent().
+      TrilinosWrappers::MPI::Vector  rhs_vector, solution_vector;
+      std::vector<double>            local_solution;
+      std::array<DenseCholesky, dim> dense;
+      std::array<bool, dim>          factored{};
+      TrilinosWrappers::MPI::Vector  lumped;   // owned
+      TrilinosWrappers::MPI::Vector  writable; // owned + writable ghosts
       /// Scratch of const functions (no state between calls).
       mutable TrilinosWrappers::MPI::Vector ghosted; // owned + read ghosts
       mutable std::vector<double>           scratch;

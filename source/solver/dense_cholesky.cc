@@ -1,0 +1,88 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/solver/dense_cholesky.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <algorithm>
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Solver
+  {
+    bool
+    DenseCholesky::factorize(const TrilinosWrappers::SparseMatrix &A)
+    {
+      n = A.m();
+      L.assign(std::size_t(n) * n, 0.);
+      first.assign(n, n);
+      y.resize(n);
+      const Epetra_CrsMatrix &crs = A.trilinos_matrix();
+      int                    *offsets, *columns;
+      double                 *entries;
+      crs.ExtractCrsDataPointers(offsets, columns, entries);
+      for (unsigned int r = 0; r < n; ++r)
+        {
+          const unsigned int i = crs.GRID(r);
+          for (int k = offsets[r]; k < offsets[r + 1]; ++k)
+            {
+              const unsigned int j = crs.GCID(columns[k]);
+              if (j <= i && entries[k] != 0)
+                {
+                  L[std::size_t(i) * n + j] = entries[k];
+                  first[i]                  = std::min(first[i], j);
+                }
+            }
+          first[i] = std::min(first[i], i);
+        }
+      // Cholesky-Banachiewicz, row by row, inside the envelope.
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          double *const Li = &L[std::size_t(i) * n];
+          for (unsigned int j = first[i]; j <= i; ++j)
+            {
+              const double *const Lj = &L[std::size_t(j) * n];
+              double              s  = Li[j];
+              for (unsigned int k = std::max(first[i], first[j]); k < j; ++k)
+                s -= Li[k] * Lj[k];
+              if (j < i)
+                Li[j] = s / Lj[j];
+              else if (s > 0)
+                Li[i] = std::sqrt(s);
+              else
+                return false;
+            }
+        }
+      return true;
+    }
+
+
+
+    void
+    DenseCholesky::solve(const TrilinosWrappers::MPI::Vector &b,
+                         TrilinosWrappers::MPI::Vector       &x) const
+    {
+      // L y = b, then L^T x = y (column sweep, so that the rows of L are
+      // read contiguously).
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double *const Li = &L[std::size_t(i) * n];
+          double              s  = b[i];
+          for (unsigned int k = first[i]; k < i; ++k)
+            s -= Li[k] * y[k];
+          y[i] = s / Li[i];
+        }
+      for (unsigned int i = n; i-- > 0;)
+        {
+          const double *const Li = &L[std::size_t(i) * n];
+          y[i] /= Li[i];
+          for (unsigned int k = first[i]; k < i; ++k)
+            y[k] -= Li[k] * y[i];
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        x[i] = y[i];
+      x.compress(VectorOperation::insert);
+    }
+  } // namespace Solver
+} // namespace psmpm
