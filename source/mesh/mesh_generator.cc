@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <psmpm/mesh/gmsh_physical_names.h>
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/mesh/triangle_geometry.h>
 
@@ -339,44 +340,24 @@ namespace psmpm
       // is one boundary: defined once, with a tag other than 0 (deal.II
       // gives every edge without a physical tag boundary id 0).
       std::map<std::string, types::boundary_id> physical_names;
-      {
-        std::string line;
-        while (std::getline(in, line))
-          if (line.rfind("$PhysicalNames", 0) == 0)
-            {
-              unsigned int n = 0;
-              in >> n;
-              for (unsigned int i = 0; i < n && in; ++i)
-                {
-                  int         entity_dim = 0, tag = 0;
-                  std::string rest;
-                  in >> entity_dim >> tag;
-                  std::getline(in, rest);
-                  const auto a = rest.find('"'), b = rest.rfind('"');
-                  if (entity_dim == 1 && a != std::string::npos && b > a)
-                    {
-                      const std::string name = rest.substr(a + 1, b - a - 1);
-                      AssertThrow(physical_names.count(name) == 0,
-                                  ExcMessage(
-                                    "Mesh/File = " + filename +
-                                    ": the physical name \"" + name +
-                                    "\" is defined twice (tags " +
-                                    std::to_string(physical_names[name]) +
-                                    " and " + std::to_string(tag) + ")."));
-                      AssertThrow(tag > 0,
-                                  ExcMessage(
-                                    "Mesh/File = " + filename +
-                                    ": the physical name \"" + name +
-                                    "\" has tag " + std::to_string(tag) +
-                                    "; boundary tags must be positive (0 is "
-                                    "the boundary of edges without a "
-                                    "physical group)."));
-                      physical_names[name] = tag;
-                    }
-                }
-              break;
-            }
-      }
+      for (const auto &[entity_dim, tag, name] : read_physical_names(in))
+        if (entity_dim == 1)
+          {
+            AssertThrow(physical_names.count(name) == 0,
+                        ExcMessage("Mesh/File = " + filename +
+                                   ": the physical name \"" + name +
+                                   "\" is defined twice (tags " +
+                                   std::to_string(physical_names[name]) +
+                                   " and " + std::to_string(tag) + ")."));
+            AssertThrow(tag > 0,
+                        ExcMessage("Mesh/File = " + filename +
+                                   ": the physical name \"" + name +
+                                   "\" has tag " + std::to_string(tag) +
+                                   "; boundary tags must be positive (0 is "
+                                   "the boundary of edges without a "
+                                   "physical group)."));
+            physical_names[name] = tag;
+          }
       in.clear();
       in.seekg(0);
       check_orientation(in, filename);

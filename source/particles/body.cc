@@ -40,6 +40,32 @@ namespace psmpm
                (d3 == 0 && on(c, d, a)) || (d4 == 0 && on(c, d, b));
       }
 
+      /**
+       * Crossing test (W. R. Franklin's pnpoly) over the edges edge(0),
+       * ..., edge(n - 1), each a pair of points: a ray to +x crosses the
+       * boundary an odd number of times from inside. Points on an edge are
+       * counted explicitly (closed shapes), as the crossing test gives
+       * either answer there.
+       */
+      template <typename Edge>
+      bool
+      crossing_test(const Point<2> &p, const std::size_t n, const Edge &edge)
+      {
+        bool in = false;
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            const auto [a, b] = edge(i);
+            if (cross(b - a, p - a) == 0 && std::min(a[0], b[0]) <= p[0] &&
+                p[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= p[1] &&
+                p[1] <= std::max(a[1], b[1]))
+              return true;
+            if ((a[1] > p[1]) != (b[1] > p[1]) &&
+                p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
+              in = !in;
+          }
+        return in;
+      }
+
       std::string
       list(const std::vector<double> &v)
       {
@@ -98,52 +124,20 @@ namespace psmpm
             return (p - center).norm_square() <= radius * radius;
           case Type::polygon:
             {
-              // Crossing test (W. R. Franklin's pnpoly): a ray to +x
-              // crosses the boundary an odd number of times from inside.
-              // Points on an edge are counted explicitly, as the crossing
-              // test gives either answer there.
-              bool              in = false;
-              const std::size_t n  = vertices.size();
-              for (std::size_t i = 0, j = n - 1; i < n; j = i++)
-                {
-                  const Point<2> &a = vertices[i], &b = vertices[j];
-                  if (cross(b - a, p - a) == 0 &&
-                      std::min(a[0], b[0]) <= p[0] &&
-                      p[0] <= std::max(a[0], b[0]) &&
-                      std::min(a[1], b[1]) <= p[1] &&
-                      p[1] <= std::max(a[1], b[1]))
-                    return true;
-                  if ((a[1] > p[1]) != (b[1] > p[1]) &&
-                      p[0] <
-                        (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
-                    in = !in;
-                }
-              return in;
+              const std::size_t n = vertices.size();
+              return crossing_test(p, n, [&](const std::size_t i) {
+                return std::make_pair(vertices[i], vertices[(i + n - 1) % n]);
+              });
             }
           case Type::gmsh:
-            {
-              if (p[0] < box_lower[0] || p[0] > box_upper[0] ||
-                  p[1] < box_lower[1] || p[1] > box_upper[1])
-                return false;
-              // The same crossing test over the outline's edges, which
-              // need not form one loop (holes, several pieces).
-              bool in = false;
-              for (const auto &e : edges)
-                {
-                  const Point<2> &a = e[0], &b = e[1];
-                  if (cross(b - a, p - a) == 0 &&
-                      std::min(a[0], b[0]) <= p[0] &&
-                      p[0] <= std::max(a[0], b[0]) &&
-                      std::min(a[1], b[1]) <= p[1] &&
-                      p[1] <= std::max(a[1], b[1]))
-                    return true;
-                  if ((a[1] > p[1]) != (b[1] > p[1]) &&
-                      p[0] <
-                        (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
-                    in = !in;
-                }
-              return in;
-            }
+            // The outline's edges need not form one loop (holes, several
+            // pieces): the crossing test does not care.
+            if (p[0] < box_lower[0] || p[0] > box_upper[0] ||
+                p[1] < box_lower[1] || p[1] > box_upper[1])
+              return false;
+            return crossing_test(p, edges.size(), [&](const std::size_t i) {
+              return std::make_pair(edges[i][0], edges[i][1]);
+            });
         }
       return false;
     }

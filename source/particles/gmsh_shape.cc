@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
+#include <psmpm/mesh/gmsh_physical_names.h>
 #include <psmpm/particles/body.h>
 
 #include <fstream>
@@ -23,24 +24,9 @@ namespace psmpm
       surface_names(std::istream &in)
       {
         std::map<std::string, int> names;
-        std::string                line;
-        while (std::getline(in, line))
-          if (line.rfind("$PhysicalNames", 0) == 0)
-            {
-              unsigned int n = 0;
-              in >> n;
-              for (unsigned int i = 0; i < n && in; ++i)
-                {
-                  int         entity_dim = 0, tag = 0;
-                  std::string rest;
-                  in >> entity_dim >> tag;
-                  std::getline(in, rest);
-                  const auto a = rest.find('"'), b = rest.rfind('"');
-                  if (entity_dim == 2 && a != std::string::npos && b > a)
-                    names[rest.substr(a + 1, b - a - 1)] = tag;
-                }
-              break;
-            }
+        for (const auto &entry : Mesh::read_physical_names(in))
+          if (entry.dimension == 2)
+            names[entry.name] = entry.tag;
         return names;
       }
 

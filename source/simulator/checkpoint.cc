@@ -273,10 +273,12 @@ namespace psmpm
 
     std::vector<std::string>
     Checkpoint::parameter_differences(const std::string &saved,
-                                      const std::string &current)
+                                      const std::string &current,
+                                      const std::string &defaults)
     {
       const auto               a = entries_of(saved);
       const auto               b = entries_of(current);
+      const auto               d = entries_of(defaults);
       std::vector<std::string> differences;
       for (const auto &[key, value] : a)
         {
@@ -290,7 +292,8 @@ namespace psmpm
                                   "'");
         }
       for (const auto &[key, value] : b)
-        if (!may_change(key) && a.count(key) == 0)
+        if (!may_change(key) && a.count(key) == 0 &&
+            !(d.count(key) && d.at(key) == value))
           differences.push_back(key + ": (not in the checkpoint) -> '" + value +
                                 "'");
       return differences;

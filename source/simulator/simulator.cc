@@ -254,6 +254,13 @@ namespace psmpm
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::ShortPRM);
       parameter_text = text.str();
+      // The declarations alone: entries added since a checkpoint was
+      // written are accepted on resume at their defaults.
+      ParameterHandler declared;
+      declare_parameters(declared);
+      std::ostringstream defaults;
+      declared.print_parameters(defaults, ParameterHandler::ShortPRM);
+      default_parameter_text = defaults.str();
     }
 
     template <int dim>
@@ -838,7 +845,8 @@ namespace psmpm
               const auto differences =
                 Checkpoint::parameter_differences(archive.get_text(
                                                     "psmpm/parameters"),
-                                                  parameter_text);
+                                                  parameter_text,
+                                                  default_parameter_text);
               std::string list;
               for (const auto &d : differences)
                 list += (list.empty() ? "" : "; ") + d;

@@ -104,10 +104,16 @@ namespace psmpm
        * time (to extend a run), Output directory, Output/Interval, Time
        * interval, Subdivisions, Progress interval, Test output, and the
        * subsections Checkpoint and Limits.
+       *
+       * An entry missing from @p saved (a checkpoint written before the
+       * entry existed) is no difference if its current value is its
+       * default, as printed in @p defaults (the declarations alone, as
+       * ShortPRM; empty: no defaults known).
        */
       static std::vector<std::string>
       parameter_differences(const std::string &saved,
-                            const std::string &current);
+                            const std::string &current,
+                            const std::string &defaults = "");
 
       /// Gather the particles of all ranks, in rank order, into
       /// @p archive of rank 0 (ParticleSet::save()).

@@ -301,6 +301,8 @@ namespace psmpm
       std::vector<double> step_times;
       /// The scene as ShortPRM text (checkpoints compare it).
       std::string parameter_text;
+      /// The same for the declarations alone (the defaults).
+      std::string default_parameter_text;
       /// The checkpoint this run resumed from ("" if none).
       std::string  resumed_from;
       unsigned int resumed_step = 0;
