@@ -95,21 +95,21 @@ namespace psmpm
       stride = names.size();
       for (auto &m : instances)
         m->set_state_stride(stride);
-    }
 
-
-
-    template <int dim>
-    std::vector<const Material<dim> *>
-    MaterialSet<dim>::in_use() const
-    {
-      std::vector<const Material<dim> *> r;
-      if (instances.size() == 1)
-        r.push_back(instances[0].get());
-      else
-        for (unsigned int k = 1; k < instances.size(); ++k)
-          r.push_back(instances[k].get());
-      return r;
+      // The materials whose particles exist (subsection Material alone
+      // without Bodies) and their bounds, fixed for the run: the time
+      // step asks for the wave speed every step.
+      used.clear();
+      for (unsigned int k = (instances.size() == 1 ? 0 : 1);
+           k < instances.size();
+           ++k)
+        used.push_back(instances[k].get());
+      density_bound = wave_speed_bound = 0;
+      for (const auto *m : used)
+        {
+          density_bound    = std::max(density_bound, m->density);
+          wave_speed_bound = std::max(wave_speed_bound, m->p_wave_speed());
+        }
     }
 
 
@@ -120,36 +120,12 @@ namespace psmpm
     {
       std::vector<std::string> seen;
       std::string              r;
-      for (const auto *m : in_use())
+      for (const auto *m : used)
         if (std::find(seen.begin(), seen.end(), m->name()) == seen.end())
           {
             seen.push_back(m->name());
             r += (r.empty() ? "" : ", ") + m->name();
           }
-      return r;
-    }
-
-
-
-    template <int dim>
-    double
-    MaterialSet<dim>::max_density() const
-    {
-      double r = 0;
-      for (const auto *m : in_use())
-        r = std::max(r, m->density);
-      return r;
-    }
-
-
-
-    template <int dim>
-    double
-    MaterialSet<dim>::max_p_wave_speed() const
-    {
-      double r = 0;
-      for (const auto *m : in_use())
-        r = std::max(r, m->p_wave_speed());
       return r;
     }
 

@@ -3,10 +3,9 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria_description.h>
 
-#include <psmpm/mesh/gmsh_physical_names.h>
+#include <psmpm/mesh/gmsh_file.h>
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/mesh/triangle_geometry.h>
 
@@ -364,19 +363,7 @@ namespace psmpm
       in.clear();
       in.seekg(0);
 
-      GridIn<2> grid_in;
-      grid_in.attach_triangulation(tria);
-      try
-        {
-          grid_in.read_msh(in);
-        }
-      catch (const std::exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("Mesh/File = " + filename +
-                                 ": not a readable Gmsh mesh (" + e.what() +
-                                 ")."));
-        }
+      read_cells(in, tria, "Mesh/File = " + filename);
       AssertThrow(tria.n_active_cells() > 0,
                   ExcMessage("Mesh/File = " + filename + ": no cells."));
       for (const auto &cell : tria.active_cell_iterators())

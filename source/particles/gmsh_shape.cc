@@ -2,10 +2,9 @@
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
-#include <psmpm/mesh/gmsh_physical_names.h>
+#include <psmpm/mesh/gmsh_file.h>
 #include <psmpm/particles/body.h>
 
 #include <fstream>
@@ -75,18 +74,7 @@ namespace psmpm
       in.seekg(0);
 
       Triangulation<2> tria;
-      GridIn<2>        grid_in;
-      grid_in.attach_triangulation(tria);
-      try
-        {
-          grid_in.read_msh(in);
-        }
-      catch (const std::exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage(where + ": not a readable Gmsh mesh (" +
-                                 e.what() + ")."));
-        }
+      Mesh::read_cells(in, tria, where);
       std::set<int> tags_present;
       for (const auto &cell : tria.active_cell_iterators())
         tags_present.insert(cell->material_id());

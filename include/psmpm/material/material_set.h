@@ -102,9 +102,15 @@ namespace psmpm
 
       /// Largest density and p-wave speed of the materials in use.
       double
-      max_density() const;
+      max_density() const
+      {
+        return density_bound;
+      }
       double
-      max_p_wave_speed() const;
+      max_p_wave_speed() const
+      {
+        return wave_speed_bound;
+      }
 
       /// Initial state of every particle (state_names() columns set).
       void
@@ -133,15 +139,15 @@ namespace psmpm
       for_each_run(const Particles::ParticleSet<dim> &particles,
                    const F                           &f) const;
 
-      /// Instances whose particles exist (index 0 alone without Bodies).
-      std::vector<const Material<dim> *>
-      in_use() const;
-
       std::vector<std::unique_ptr<Material<dim>>> instances;
       std::vector<unsigned int>                   ids;
       std::vector<unsigned int>                   offsets; ///< per instance
       std::vector<std::string>                    names;
       unsigned int                                stride = 0;
+      /// Instances whose particles exist (index 0 alone without Bodies).
+      std::vector<const Material<dim> *> used;
+      double                             density_bound    = 0;
+      double                             wave_speed_bound = 0;
     };
   } // namespace Material
 } // namespace psmpm

@@ -1,8 +1,10 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#ifndef psmpm_mesh_gmsh_physical_names_h
-#define psmpm_mesh_gmsh_physical_names_h
+#ifndef psmpm_mesh_gmsh_file_h
+#define psmpm_mesh_gmsh_file_h
+
+#include <deal.II/grid/tria.h>
 
 #include <istream>
 #include <string>
@@ -30,6 +32,17 @@ namespace psmpm
      */
     std::vector<PhysicalName>
     read_physical_names(std::istream &in);
+
+    /**
+     * The cells of the .msh file @p in (from its start) into @p tria with
+     * deal.II's GridIn (cell material ids: the physical tags). A file
+     * GridIn cannot read throws ExcMessage "<where>: not a readable Gmsh
+     * mesh (...)"; @p where names the entry and file ("Mesh/File = x.msh").
+     */
+    void
+    read_cells(std::istream             &in,
+               dealii::Triangulation<2> &tria,
+               const std::string        &where);
   } // namespace Mesh
 } // namespace psmpm
 

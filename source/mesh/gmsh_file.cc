@@ -1,7 +1,10 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <psmpm/mesh/gmsh_physical_names.h>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_in.h>
+
+#include <psmpm/mesh/gmsh_file.h>
 
 namespace psmpm
 {
@@ -33,6 +36,28 @@ namespace psmpm
             break;
           }
       return names;
+    }
+
+
+
+    void
+    read_cells(std::istream             &in,
+               dealii::Triangulation<2> &tria,
+               const std::string        &where)
+    {
+      dealii::GridIn<2> grid_in;
+      grid_in.attach_triangulation(tria);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false,
+                      dealii::ExcMessage(where +
+                                         ": not a readable Gmsh mesh (" +
+                                         e.what() + ")."));
+        }
     }
   } // namespace Mesh
 } // namespace psmpm
