@@ -50,15 +50,16 @@ namespace psmpm
                         Patterns::Selection("jacobi|amg"),
                         "Preconditioner for CG.");
       prm.declare_entry("Direct solver size",
-                        "1000",
+                        "600",
                         Patterns::Integer(0),
                         "Mass systems with at most this many DoFs are solved "
                         "by a Cholesky factorization (in the matrix' envelope) "
                         "instead "
                         "of CG when the run has one MPI process: exact, and "
                         "cheaper than CG's fixed cost on small meshes "
-                        "(doc/performance.md; storage n^2 doubles, 8 MB at "
-                        "1000). The statistics then show 0 "
+                        "(doc/performance.md: faster up to 582 DoFs on a "
+                        "bar, slower at 841 on a square; storage n^2 doubles, "
+                        "2.9 MB at 600). The statistics then show 0 "
                         "CG iterations and no condition estimate (0). A "
                         "matrix that is not positive definite falls back to "
                         "CG. 0: always CG.");

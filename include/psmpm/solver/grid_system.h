@@ -57,7 +57,7 @@ namespace psmpm
         double       threshold      = 0.05;
         /// Serial systems with at most this many DoFs are solved by a
         /// dense Cholesky factorization instead of CG (0: never).
-        unsigned int direct_size = 1000;
+        unsigned int direct_size = 600;
         /// Fictitious mass fraction alpha of the stabilised strategies
         /// (Mass matrix/Stabilization).
         double stabilization = 1;
