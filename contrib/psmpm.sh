@@ -40,7 +40,11 @@ fi
 export OMPI_MCA_rmaps_base_oversubscribe=1
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" --target psmpm -- -j2
+# The tests' precompiled header is built here, once, before ctest runs
+# tests (and their builds) in parallel.
+targets=(psmpm)
+[ "$mode" = test ] && targets+=(psmpm_test_pch)
+cmake --build "$build" --target "${targets[@]}" -- -j2
 
 case "$mode" in
   run)   exec "$build/psmpm" "$@" ;;

@@ -1,0 +1,1 @@
+// psmpm: the object that carries tests/precompiled_headers.h (see there).
