@@ -1,16 +1,12 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
-// PSMPM_VERSION and PSMPM_GIT_DESCRIBE are set by CMake for this file
-// only, so that a new commit recompiles nothing else.
+// PSMPM_VERSION and PSMPM_GIT_DESCRIBE come from a header that CMake
+// generates for this file only, so that a new commit recompiles nothing
+// else.
 // ---------------------------------------------------------------------
 #include <psmpm/base/version.h>
 
-#ifndef PSMPM_VERSION
-#  define PSMPM_VERSION "unknown"
-#endif
-#ifndef PSMPM_GIT_DESCRIBE
-#  define PSMPM_GIT_DESCRIBE ""
-#endif
+#include "psmpm_version_info.h"
 
 namespace psmpm
 {
