@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/base/archive.h>
@@ -49,7 +50,9 @@ namespace psmpm
                 control_points[l] = all[global[l]];
               have_control_points = true;
             }
-          // Current centre of mass, for the angle.
+          // Current centre of mass, for the angle: one reduction for the
+          // three moments (these statistics run every step; each
+          // reduction is a synchronisation).
           double       mass = 0;
           Tensor<1, 2> first;
           for (std::size_t p = 0; p < particles.size(); ++p)
@@ -57,8 +60,14 @@ namespace psmpm
               mass += particles.mass[p];
               first += particles.mass[p] * particles.position[p];
             }
-          const Point<2> now(Utilities::MPI::sum(first, comm) /
-                             Utilities::MPI::sum(mass, comm));
+          double moments[3] = {first[0], first[1], mass};
+          Utilities::MPI::sum(ArrayView<const double>(moments, 3),
+                              comm,
+                              ArrayView<double>(moments, 3));
+          // Times the inverse, as Tensor / double computes it.
+          const double   inverse_mass = 1. / moments[2];
+          const Point<2> now(moments[0] * inverse_mass,
+                             moments[1] * inverse_mass);
 
           const unsigned int  n    = state.grid->dofs_per_cell;
           const unsigned int *dofs = state.grid->cell_dofs().data();
@@ -73,8 +82,12 @@ namespace psmpm
               const Tensor<2, 2> &C = particles.affine[p];
               const Tensor<1, 2>  r = x - centre;
               h += m * cross(r, particles.velocity[p]);
-              s += m * r.norm() * particles.velocity[p].norm();
-              if (C.norm_square() > 0 && known_points)
+              // The scale is only needed once (two square roots).
+              if (!initialized)
+                s += m * r.norm() * particles.velocity[p].norm();
+              if ((C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
+                   C[1][1] != 0) &&
+                  known_points)
                 {
                   const unsigned int base = particles.cell[p] * n;
                   const double      *phi  = &state.shape_values[p * n];
@@ -89,14 +102,17 @@ namespace psmpm
               across += m * cross(r0, r1);
               along += m * (r0 * r1);
             }
+          double sums[4] = {h, across, along, s};
+          Utilities::MPI::sum(ArrayView<const double>(sums, 4),
+                              comm,
+                              ArrayView<double>(sums, 4));
           Values v;
-          v.angular_momentum = Utilities::MPI::sum(h, comm);
-          v.rotation_angle   = std::atan2(Utilities::MPI::sum(across, comm),
-                                        Utilities::MPI::sum(along, comm));
+          v.angular_momentum = sums[0];
+          v.rotation_angle   = std::atan2(sums[1], sums[2]);
           if (!initialized)
             {
               initial     = v;
-              scale       = Utilities::MPI::sum(s, comm);
+              scale       = sums[3];
               initialized = true;
             }
           last = v;

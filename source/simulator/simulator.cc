@@ -41,7 +41,7 @@ namespace psmpm
       : comm(comm)
       , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
       , state(comm)
-      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+      , timer(comm, pcout)
     {
     }
 
@@ -406,7 +406,7 @@ namespace psmpm
     void
     Simulator<dim>::locate_particles()
     {
-      TimerOutput::Scope t(timer, "locate");
+      PhaseTimer::Scope  t(timer, "locate");
       auto              &particles = state.particles;
       const unsigned int rank      = Utilities::MPI::this_mpi_process(comm);
       const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(comm);
@@ -539,7 +539,7 @@ namespace psmpm
     void
     Simulator<dim>::write_output()
     {
-      TimerOutput::Scope t(timer, "output");
+      PhaseTimer::Scope t(timer, "output");
       writer->write_particles(state.step, state.time, state.particles);
       writer->write_grid(state.step,
                          state.time,
@@ -728,7 +728,7 @@ namespace psmpm
       wall.stop();
       if (!quiet)
         {
-          timer.print_wall_time_statistics(comm);
+          timer.print_wall_time_statistics();
           if (status == Status::unstable)
             pcout << "psmpm: UNSTABLE at step " << failed_step << ": "
                   << monitor.reason() << std::endl;
@@ -750,8 +750,8 @@ namespace psmpm
     void
     Simulator<dim>::write_checkpoint()
     {
-      TimerOutput::Scope t(timer, "checkpoint");
-      Archive            archive;
+      PhaseTimer::Scope t(timer, "checkpoint");
+      Archive           archive;
       archive.put_text("psmpm/format", checkpoint_format);
       archive.put_text("psmpm/version", version());
       archive.put_text("psmpm/parameters", parameter_text);
@@ -1014,7 +1014,7 @@ namespace psmpm
         }
       // Throughput of the time loop proper: every timed phase but output
       // and checkpoints.
-      const auto timings = timer.get_summary_data(TimerOutput::total_wall_time);
+      const auto timings = timer.wall_times();
       double     loop    = 0;
       for (const auto &t : timings)
         {

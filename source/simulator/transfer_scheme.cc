@@ -32,11 +32,11 @@ namespace psmpm
     TransferScheme<dim>::solve(State<dim>                  &state,
                                std::vector<Tensor<1, dim>> &solution,
                                StabilityMonitor            &monitor,
-                               TimerOutput                 &timer)
+                               PhaseTimer                  &timer)
     {
       try
         {
-          TimerOutput::Scope t(timer, "solve");
+          PhaseTimer::Scope t(timer, "solve");
           state.grid->solve(solution);
         }
       catch (const SolverControl::NoConvergence &e)
@@ -54,12 +54,12 @@ namespace psmpm
     template <int dim>
     void
     TransferScheme<dim>::particles_to_grid(State<dim>  &state,
-                                           TimerOutput &timer,
+                                           PhaseTimer  &timer,
                                            const double momentum_weight,
                                            const double force_weight)
     {
-      TimerOutput::Scope t(timer, "particle to grid");
-      auto              &grid = *state.grid;
+      PhaseTimer::Scope t(timer, "particle to grid");
+      auto             &grid = *state.grid;
       grid.zero_cell_mass();
       grid.zero_cell_rhs();
       const auto        &particles  = state.particles;
@@ -102,10 +102,10 @@ namespace psmpm
 
     template <int dim>
     void
-    TransferScheme<dim>::momentum_to_grid(State<dim> &state, TimerOutput &timer)
+    TransferScheme<dim>::momentum_to_grid(State<dim> &state, PhaseTimer &timer)
     {
-      TimerOutput::Scope t(timer, "particle to grid");
-      auto              &grid = *state.grid;
+      PhaseTimer::Scope t(timer, "particle to grid");
+      auto             &grid = *state.grid;
       grid.zero_cell_rhs();
       const auto        &particles = state.particles;
       const unsigned int n         = grid.dofs_per_cell;

@@ -64,11 +64,17 @@ namespace psmpm
                          TrilinosWrappers::MPI::Vector       &x) const
     {
       // L y = b, then L^T x = y (column sweep, so that the rows of L are
-      // read contiguously).
+      // read contiguously). Direct solves run on one rank: the owned
+      // entries are all entries, read and written through the value array
+      // (operator[] maps each index through Epetra, which cost more than
+      // the sweeps on small systems).
+      AssertDimension(b.locally_owned_size(), n);
+      AssertDimension(x.locally_owned_size(), n);
+      const double *const bv = b.begin();
       for (unsigned int i = 0; i < n; ++i)
         {
           const double *const Li = &L[std::size_t(i) * n];
-          double              s  = b[i];
+          double              s  = bv[i];
           for (unsigned int k = first[i]; k < i; ++k)
             s -= Li[k] * y[k];
           y[i] = s / Li[i];
@@ -80,9 +86,7 @@ namespace psmpm
           for (unsigned int k = first[i]; k < i; ++k)
             y[k] -= Li[k] * y[i];
         }
-      for (unsigned int i = 0; i < n; ++i)
-        x[i] = y[i];
-      x.compress(VectorOperation::insert);
+      std::copy(y.begin(), y.begin() + n, x.begin());
     }
   } // namespace Solver
 } // namespace psmpm

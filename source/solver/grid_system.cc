@@ -135,6 +135,10 @@ namespace psmpm
       relevant_global.resize(relevant.n_elements());
       for (unsigned int l = 0; l < relevant_global.size(); ++l)
         relevant_global[l] = relevant.nth_index_in_set(l);
+      owned_to_relevant.clear();
+      for (const auto i : owned)
+        owned_to_relevant.push_back(relevant.index_within_set(i));
+      owned_is_relevant = relevant == owned;
 
       owned_cell_indices.clear();
       cell_dof_indices.assign(n_cells * dofs_per_cell, 0);
@@ -503,6 +507,15 @@ namespace psmpm
         for (unsigned int k = 0; k < dofs_per_cell; ++k)
           scratch[cell_dof_indices[c * dofs_per_cell + k]] +=
             cell_values[(c * dofs_per_cell + k) * stride + offset];
+      if (owned_is_relevant)
+        {
+          // Nothing to send: the sums are the owned entries (0 + s, as
+          // add() would give, so that -0 becomes +0 there too).
+          double *const values = target.begin();
+          for (unsigned int l = 0; l < scratch.size(); ++l)
+            values[l] = 0. + scratch[l];
+          return;
+        }
       target = 0;
       target.add(relevant_global, scratch);
       target.compress(VectorOperation::add);
@@ -513,27 +526,33 @@ namespace psmpm
     GridSystem<dim>::to_local(const TrilinosWrappers::MPI::Vector &owned_vector,
                               std::vector<double>                 &local) const
     {
-      ghosted = owned_vector;
       local.resize(relevant_global.size());
+      if (owned_is_relevant)
+        {
+          std::copy(owned_vector.begin(), owned_vector.end(), local.begin());
+          return;
+        }
+      ghosted = owned_vector;
       for (unsigned int l = 0; l < relevant_global.size(); ++l)
         local[l] = ghosted[relevant_global[l]];
     }
 
     template <int dim>
-    std::vector<double>
+    const std::vector<double> &
     GridSystem<dim>::particle_diagonal()
     {
-      const unsigned int  n = dofs_per_cell;
-      std::vector<double> cell_diagonal(n_cells * n, 0.);
+      // Member scratch, no Trilinos vector constructed per step: that cost
+      // more than the whole assembly of a small system. solution_vector is
+      // free here (solve() overwrites it).
+      const unsigned int n = dofs_per_cell;
+      cell_scratch.resize(n_cells * n);
       for (const unsigned int c : owned_cell_indices)
         for (unsigned int k = 0; k < n; ++k)
-          cell_diagonal[c * n + k] = cells.mass[(c * n + k) * n + k];
-      scatter(cell_diagonal.data(), 1, 0, writable);
-      TrilinosWrappers::MPI::Vector diagonal_vector(owned, comm);
-      diagonal_vector = writable;
-      std::vector<double> diagonal;
-      to_local(diagonal_vector, diagonal);
-      return diagonal;
+          cell_scratch[c * n + k] = cells.mass[(c * n + k) * n + k];
+      scatter(cell_scratch.data(), 1, 0, writable);
+      solution_vector = writable;
+      to_local(solution_vector, diagonal_scratch);
+      return diagonal_scratch;
     }
 
     template <int dim>
@@ -547,16 +566,17 @@ namespace psmpm
       // Statistics of the diagonal over supported DoFs.
       double       dmin = std::numeric_limits<double>::max(), dmax = 0;
       unsigned int n_empty = 0;
-      for (const auto i : owned)
+      for (const unsigned int l : owned_to_relevant)
         {
-          const double m = lumped[i];
+          const double m = local_lumped[l];
           if (m > 0)
             dmin = std::min(dmin, m), dmax = std::max(dmax, m);
           else
             {
               bool all_fixed = true;
               for (unsigned int d = 0; d < dim; ++d)
-                all_fixed = all_fixed && dirichlet[d].is_constrained(i);
+                all_fixed =
+                  all_fixed && dirichlet[d].is_constrained(relevant_global[l]);
               n_empty += !all_fixed;
             }
         }
@@ -570,11 +590,10 @@ namespace psmpm
         return;
 
       // Particle diagonal M_ii relative to the full-support one.
-      const std::vector<double> diagonal = particle_diagonal();
-      double                    rmin     = std::numeric_limits<double>::max();
-      for (const auto i : owned)
+      const std::vector<double> &diagonal = particle_diagonal();
+      double                     rmin     = std::numeric_limits<double>::max();
+      for (const unsigned int l : owned_to_relevant)
         {
-          const unsigned int l = relevant.index_within_set(i);
           if (local_full_diagonal[l] > 0 && diagonal[l] > 0)
             rmin = std::min(rmin, diagonal[l] / local_full_diagonal[l]);
         }
@@ -640,9 +659,12 @@ namespace psmpm
             const double v = weight * values[k * n + k] != 0 ?
                                std::abs(weight * values[k * n + k]) :
                                average;
-            matrix[d].add(relevant_global[dofs[k]],
-                          relevant_global[dofs[k]],
-                          v);
+            if (slots != nullptr && matrix_row[dofs[k]] >= 0)
+              entries[slots[k * n + k]] += v;
+            else
+              matrix[d].add(relevant_global[dofs[k]],
+                            relevant_global[dofs[k]],
+                            v);
           }
     }
 
@@ -718,10 +740,10 @@ namespace psmpm
       // a unit diagonal so that its (zero) coefficient is well defined.
       // (Rows of patch blocks, e.g. the ghost penalty, may hold a DoF
       // without particle mass: it keeps its row.)
-      for (const auto i : owned)
-        if (lumped[i] == 0 && !active_constraints[d].is_constrained(i) &&
-            matrix[d].diag_element(i) == 0)
-          matrix[d].set(i, i, 1.0);
+      for (const unsigned int l : owned_to_relevant)
+        if (local_lumped[l] == 0 && !constrained[d][l] &&
+            matrix[d].diag_element(relevant_global[l]) == 0)
+          matrix[d].set(relevant_global[l], relevant_global[l], 1.0);
       matrix[d].compress(VectorOperation::insert);
       factored[d] = direct && dense[d].factorize(matrix[d]);
       if (!factored[d])
@@ -745,11 +767,11 @@ namespace psmpm
         {
           // Tensor<1,dim> stores its components contiguously.
           scatter(&cells.rhs[0][0], dim, d, writable);
-          rhs = writable;
-          for (const auto i : owned)
-            if (constrained[d][relevant.index_within_set(i)])
-              rhs[i] = 0;
-          rhs.compress(VectorOperation::insert);
+          rhs                  = writable;
+          double *const values = rhs.begin();
+          for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
+            if (constrained[d][owned_to_relevant[j]])
+              values[j] = 0;
         }
       else
         {
@@ -809,13 +831,13 @@ namespace psmpm
           else
             {
               // Tensor<1,dim> stores its components contiguously.
+              // The owned entries of all three vectors, in owned order.
               scatter(&cells.rhs[0][0], dim, d, writable);
-              for (const auto i : owned)
-                {
-                  const double m = lumped[i];
-                  x[i]           = m > 0 ? writable[i] / m : 0.;
-                }
-              x.compress(VectorOperation::insert);
+              const double *const b = writable.begin();
+              const double *const m = lumped.begin();
+              double *const       v = x.begin();
+              for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
+                v[j] = m[j] > 0 ? b[j] / m[j] : 0.;
             }
           active_constraints[d].distribute(x);
           to_local(x, local);

@@ -9,6 +9,7 @@
 #include <deal.II/base/table_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <psmpm/base/phase_timer.h>
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/particles/particle_generator.h>
 #include <psmpm/postprocess/energies.h>
@@ -290,7 +291,7 @@ namespace psmpm
       // Run record.
       std::string  output_directory;
       TableHandler statistics;
-      TimerOutput  timer;
+      PhaseTimer   timer;
       Status       status           = Status::completed;
       unsigned int failed_step      = 0;
       double       failed_time      = 0;

@@ -5,9 +5,9 @@
 #define psmpm_simulator_transfer_scheme_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/timer.h>
 
 #include <psmpm/base/archive.h>
+#include <psmpm/base/phase_timer.h>
 #include <psmpm/base/registry.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
@@ -99,9 +99,7 @@ namespace psmpm
       /// Advance @p state by state.dt. Returns false if the step had to
       /// be abandoned (a failure is reported, positions are not advanced).
       virtual bool
-      step(State<dim>       &state,
-           StabilityMonitor &monitor,
-           TimerOutput      &timer) = 0;
+      step(State<dim> &state, StabilityMonitor &monitor, PhaseTimer &timer) = 0;
 
     protected:
       /// state.grid->solve(@p solution), a CG failure reported to the
@@ -110,7 +108,7 @@ namespace psmpm
       solve(State<dim>                  &state,
             std::vector<Tensor<1, dim>> &solution,
             StabilityMonitor            &monitor,
-            TimerOutput                 &timer);
+            PhaseTimer                  &timer);
 
       /// Particle mass into the cell matrices (lumped and, for matrix
       /// strategies, consistent; then the strategy: assemble_mass) and the
@@ -120,14 +118,14 @@ namespace psmpm
       /// both (1, its mean step).
       static void
       particles_to_grid(State<dim>  &state,
-                        TimerOutput &timer,
+                        PhaseTimer  &timer,
                         const double momentum_weight,
                         const double force_weight);
 
       /// Cell right-hand sides sum_p m_p v_p N_i (the mass matrix of the
       /// step already assembled).
       static void
-      momentum_to_grid(State<dim> &state, TimerOutput &timer);
+      momentum_to_grid(State<dim> &state, PhaseTimer &timer);
 
       /// The material update of all particles from their increments
       /// dt grad v, then volumes and densities; a non-positive volume is

@@ -318,7 +318,9 @@ namespace psmpm
         const std::array<std::set<types::boundary_id>, dim> &fixed);
       void
       build_sparsity();
-      std::vector<double>
+      /// The particle mass matrix' diagonal in local relevant numbering
+      /// (a member's reference, valid until the next call).
+      const std::vector<double> &
       particle_diagonal();
       void
       assemble_matrix(const unsigned int d);
@@ -389,10 +391,18 @@ namespace psmpm
       /// Scratch of const functions (no state between calls).
       mutable TrilinosWrappers::MPI::Vector ghosted; // owned + read ghosts
       mutable std::vector<double>           scratch;
-      std::vector<double>                   local_lumped;
-      std::vector<double>                   local_full_diagonal;
-      SolveStatistics                       stats;
-      double                                density = 0;
+      /// Per-cell scratch of particle_diagonal() and its result.
+      std::vector<double> cell_scratch, diagonal_scratch;
+      /// Local relevant index of the j-th owned DoF: owned vectors (the
+      /// owned entries of writable ones) are read and written through
+      /// their value arrays in this order, without Epetra's index maps.
+      std::vector<unsigned int> owned_to_relevant;
+      /// One rank: relevant == owned, and vectors are copied as arrays.
+      bool                owned_is_relevant = false;
+      std::vector<double> local_lumped;
+      std::vector<double> local_full_diagonal;
+      SolveStatistics     stats;
+      double              density = 0;
     };
   } // namespace Solver
 } // namespace psmpm

@@ -113,11 +113,11 @@ namespace psmpm
         bool
         step(State<dim>       &state,
              StabilityMonitor &monitor,
-             TimerOutput      &timer) override
+             PhaseTimer       &timer) override
         {
           setup(state);
           {
-            TimerOutput::Scope t(timer, "particle to grid");
+            PhaseTimer::Scope t(timer, "particle to grid");
             mass_to_grid(state);
             affine_momentum_to_grid(state);
           }
@@ -130,7 +130,7 @@ namespace psmpm
             state.grid_velocity[l] += state.dt * state.grid_acceleration[l];
           velocities_to_particles(state, timer);
           {
-            TimerOutput::Scope t(timer, "particle to grid");
+            PhaseTimer::Scope t(timer, "particle to grid");
             affine_momentum_to_grid(state);
           }
           if (!this->solve(state, state.grid_velocity, monitor, timer))
@@ -258,10 +258,10 @@ namespace psmpm
         }
 
         static void
-        forces_to_grid(State<dim> &state, TimerOutput &timer)
+        forces_to_grid(State<dim> &state, PhaseTimer &timer)
         {
-          TimerOutput::Scope t(timer, "particle to grid");
-          auto              &grid = *state.grid;
+          PhaseTimer::Scope t(timer, "particle to grid");
+          auto             &grid = *state.grid;
           grid.zero_cell_rhs();
           const auto     &particles = state.particles;
           const unsigned  n         = grid.dofs_per_cell;
@@ -320,9 +320,9 @@ namespace psmpm
         }
 
         void
-        velocities_to_particles(State<dim> &state, TimerOutput &timer) const
+        velocities_to_particles(State<dim> &state, PhaseTimer &timer) const
         {
-          TimerOutput::Scope  t(timer, "grid to particle");
+          PhaseTimer::Scope   t(timer, "grid to particle");
           auto               &particles = state.particles;
           const unsigned int  n         = state.grid->dofs_per_cell;
           const unsigned int *dofs      = state.grid->cell_dofs().data();
@@ -370,9 +370,9 @@ namespace psmpm
         void
         update_particle_state(State<dim>       &state,
                               StabilityMonitor &monitor,
-                              TimerOutput      &timer)
+                              PhaseTimer       &timer)
         {
-          TimerOutput::Scope  t(timer, "update");
+          PhaseTimer::Scope   t(timer, "update");
           auto               &particles = state.particles;
           const unsigned int  n         = state.grid->dofs_per_cell;
           const unsigned int *dofs      = state.grid->cell_dofs().data();

@@ -27,7 +27,7 @@ namespace psmpm
         bool
         step(State<dim>       &state,
              StabilityMonitor &monitor,
-             TimerOutput      &timer) override
+             PhaseTimer       &timer) override
         {
           this->particles_to_grid(state, timer, 0., 1.);
           if (!this->solve(state, state.grid_acceleration, monitor, timer))
@@ -41,10 +41,10 @@ namespace psmpm
 
       private:
         static void
-        update_particle_velocities(State<dim> &state, TimerOutput &timer)
+        update_particle_velocities(State<dim> &state, PhaseTimer &timer)
         {
-          TimerOutput::Scope t(timer, "grid to particle");
-          auto              &grid = *state.grid;
+          PhaseTimer::Scope t(timer, "grid to particle");
+          auto             &grid = *state.grid;
           grid.zero_cell_rhs();
           auto               &particles = state.particles;
           const unsigned int  n         = grid.dofs_per_cell;
@@ -68,9 +68,9 @@ namespace psmpm
         void
         update_particle_state(State<dim>       &state,
                               StabilityMonitor &monitor,
-                              TimerOutput      &timer)
+                              PhaseTimer       &timer)
         {
-          TimerOutput::Scope  t(timer, "update");
+          PhaseTimer::Scope   t(timer, "update");
           auto               &particles = state.particles;
           const unsigned int  n         = state.grid->dofs_per_cell;
           const unsigned int *dofs      = state.grid->cell_dofs().data();

@@ -150,7 +150,7 @@ namespace psmpm
         bool
         step(State<dim>       &state,
              StabilityMonitor &monitor,
-             TimerOutput      &timer) override
+             PhaseTimer       &timer) override
         {
           const double dt = state.dt;
           // x_-1 = x_0 - dt_0 v_0: the first step is centred on dt_0.
@@ -217,9 +217,9 @@ namespace psmpm
         bool
         move_grid(State<dim>       &state,
                   StabilityMonitor &monitor,
-                  TimerOutput      &timer)
+                  PhaseTimer       &timer)
         {
-          TimerOutput::Scope t(timer, "otm grid");
+          PhaseTimer::Scope t(timer, "otm grid");
           for (unsigned int i = 0; i < nodes.size(); ++i)
             moved[i] = nodes[i] + state.dt * state.grid_velocity[i];
           for (const unsigned int c : occupied)
@@ -261,9 +261,9 @@ namespace psmpm
         void
         update_particles(State<dim>       &state,
                          StabilityMonitor &monitor,
-                         TimerOutput      &timer)
+                         PhaseTimer       &timer)
         {
-          TimerOutput::Scope  t(timer, "update");
+          PhaseTimer::Scope   t(timer, "update");
           auto               &particles = state.particles;
           const unsigned int  n         = state.grid->dofs_per_cell;
           const unsigned int *dofs      = state.grid->cell_dofs().data();
@@ -331,18 +331,15 @@ namespace psmpm
           moved       = nodes;
           previous_dt = archive.get_number("otm/previous_dt");
           // The particles (restored in their cells) on the moved grid.
-          TimerOutput timer(MPI_COMM_SELF,
-                            std::cout,
-                            TimerOutput::never,
-                            TimerOutput::wall_times);
+          PhaseTimer timer(MPI_COMM_SELF, ConditionalOStream(std::cout, false));
           evaluate_on_moved_grid(state, timer);
         }
 
         /// N_a,k+1 and grad N_a,k+1 at x_p,k+1 on the moved grid.
         void
-        evaluate_on_moved_grid(State<dim> &state, TimerOutput &timer)
+        evaluate_on_moved_grid(State<dim> &state, PhaseTimer &timer)
         {
-          TimerOutput::Scope t(timer, "otm grid");
+          PhaseTimer::Scope t(timer, "otm grid");
           for (const unsigned int c : occupied)
             maps[c] = Mesh::barycentric_map(vertices(*state.grid, nodes, c));
           const auto        &particles = state.particles;

@@ -26,7 +26,7 @@ namespace psmpm
         bool
         step(State<dim>       &state,
              StabilityMonitor &monitor,
-             TimerOutput      &timer) override
+             PhaseTimer       &timer) override
         {
           this->particles_to_grid(state, timer, 0., 1.);
           if (!this->solve(state, state.grid_acceleration, monitor, timer))
@@ -44,9 +44,9 @@ namespace psmpm
         void
         update_particles(State<dim>       &state,
                          StabilityMonitor &monitor,
-                         TimerOutput      &timer)
+                         PhaseTimer       &timer)
         {
-          TimerOutput::Scope  t(timer, "update");
+          PhaseTimer::Scope   t(timer, "update");
           auto               &particles = state.particles;
           const unsigned int  n         = state.grid->dofs_per_cell;
           const unsigned int *dofs      = state.grid->cell_dofs().data();
