@@ -56,6 +56,8 @@ namespace psmpm
       std::vector<double>         L;     ///< row-major n x n, lower part
       std::vector<unsigned int>   first; ///< first column of row i's envelope
       mutable std::vector<double> y;
+      /// Global index of each local row and column of the matrix.
+      std::vector<unsigned int> row_gid, column_gid;
     };
   } // namespace Solver
 } // namespace psmpm
