@@ -159,6 +159,7 @@ namespace psmpm
                                            fixed[d],
                                            Functions::ZeroFunction<dim>(),
                                            c);
+          space.make_space_constraints(dof_handler, c);
           c.close();
           active_constraints[d].clear();
           active_constraints[d].copy_from(c);
@@ -175,6 +176,7 @@ namespace psmpm
       local_lumped.assign(relevant_global.size(), 0.);
       scratch.assign(relevant_global.size(), 0.);
 
+      build_ties();
       build_vertex_tables(fixed);
       direct = uses_matrix() &&
                dof_handler.n_dofs() <= parameters.direct_size &&
@@ -187,6 +189,34 @@ namespace psmpm
         }
       else
         cells.mass.clear();
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::build_ties()
+    {
+      // The space's own constraints in local relevant numbering, for the
+      // lumped path, which condenses vectors without AffineConstraints.
+      AffineConstraints<double> c(relevant);
+      space.make_space_constraints(dof_handler, c);
+      c.close();
+      ties.clear();
+      for (unsigned int l = 0; l < relevant_global.size(); ++l)
+        if (c.is_constrained(relevant_global[l]))
+          {
+            Tie         tie{l, {}};
+            const auto *entries = c.get_constraint_entries(relevant_global[l]);
+            bool        local   = true;
+            for (const auto &[j, w] : *entries)
+              if (relevant.is_element(j))
+                tie.targets.emplace_back(relevant.index_within_set(j), w);
+              else
+                local = false;
+            // A tie that reaches outside the relevant DoFs belongs to a
+            // vertex of a ghost cell only, which no owned cell adds to.
+            if (local)
+              ties.push_back(std::move(tie));
+          }
     }
 
     template <int dim>
@@ -494,7 +524,8 @@ namespace psmpm
     GridSystem<dim>::scatter(const double                  *cell_values,
                              const unsigned int             stride,
                              const unsigned int             offset,
-                             TrilinosWrappers::MPI::Vector &target) const
+                             TrilinosWrappers::MPI::Vector &target,
+                             const bool                     condense) const
     {
       // Sum cell contributions locally first, then hand Trilinos one
       // vector: far cheaper than one add() per cell.
@@ -503,6 +534,15 @@ namespace psmpm
         for (unsigned int k = 0; k < dofs_per_cell; ++k)
           scratch[cell_dof_indices[c * dofs_per_cell + k]] +=
             cell_values[(c * dofs_per_cell + k) * stride + offset];
+      if (condense)
+        // C^T b: what a tied DoF collects goes to the DoFs it is tied to.
+        for (const auto &tie : ties)
+          {
+            const double v   = scratch[tie.dof];
+            scratch[tie.dof] = 0;
+            for (const auto &[j, w] : tie.targets)
+              scratch[j] += w * v;
+          }
       target = 0;
       target.add(relevant_global, scratch);
       target.compress(VectorOperation::add);
@@ -540,7 +580,9 @@ namespace psmpm
     void
     GridSystem<dim>::assemble_mass()
     {
-      scatter(cells.lumped.data(), 1, 0, writable);
+      // Row sums of the condensed matrix C^T M C are C^T (M 1) (C 1 = 1:
+      // the ties are convex combinations), the lumped mass of the space.
+      scatter(cells.lumped.data(), 1, 0, writable, true);
       lumped = writable;
       to_local(lumped, local_lumped);
 
@@ -809,7 +851,7 @@ namespace psmpm
           else
             {
               // Tensor<1,dim> stores its components contiguously.
-              scatter(&cells.rhs[0][0], dim, d, writable);
+              scatter(&cells.rhs[0][0], dim, d, writable, true);
               for (const auto i : owned)
                 {
                   const double m = lumped[i];
