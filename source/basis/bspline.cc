@@ -253,7 +253,7 @@ namespace psmpm
       const Registration<SpaceRegistry<1>> register_bspline(
         {"bspline",
          "quadratic C1 B-splines on the open knot vector of the 1D mesh "
-         "(BSMPM; Basis/Degree = 2), by Bezier extraction on the "
+         "(BSMPM, Basis/Degree = 2), by Bezier extraction on the "
          "FE_Q(2) layout",
          &make_bspline,
          nullptr});

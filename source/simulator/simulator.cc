@@ -79,8 +79,16 @@ namespace psmpm
             const std::string name = names_1d.substr(begin, end - begin);
             if (!registry_2d.has(name))
               {
+                // Its "name: description" entry of the 1D documentation.
+                const std::string all   = registry_1d.documentation();
+                const auto        first = all.find(name + ": ");
+                const auto        last  = all.find("; ", first);
                 selection += "|" + name;
-                documentation += "; " + name + " (1D only)";
+                documentation += "; " + name + " (1D only)" +
+                                 all.substr(first + name.size(),
+                                            last == std::string::npos ?
+                                              std::string::npos :
+                                              last - first - name.size());
               }
           }
       }

@@ -33,6 +33,7 @@ namespace psmpm
         Patterns::Selection("automatic|" +
                             MassStrategyRegistry<dim>::instance().selection()),
         "automatic: the basis' measured default (lumped for powell-sabin, "
+        "consistent for bspline (doc/chapter.md), "
         "ghost penalty for linear, partially lumped for linear with a "
         "moving grid (otm); doc/transfers.md); " +
           MassStrategyRegistry<dim>::instance().documentation());
