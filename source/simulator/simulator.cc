@@ -15,6 +15,7 @@
 #include <psmpm/postprocess/progress.h>
 #include <psmpm/simulator/simulator.h>
 
+#include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <cmath>
@@ -62,12 +63,46 @@ namespace psmpm
       Checkpoint::declare_parameters(prm);
       Postprocess::OutputWriter<2>::declare_parameters(prm);
 
+      // Basis/Type lists the spaces of both dimensions (bspline is 1D
+      // only, powell-sabin 2D only); creation rejects the wrong one.
+      std::string selection = Basis::SpaceRegistry<2>::instance().selection();
+      std::string documentation =
+        Basis::SpaceRegistry<2>::instance().documentation();
+      {
+        const auto &registry_1d = Basis::SpaceRegistry<1>::instance();
+        const auto &registry_2d = Basis::SpaceRegistry<2>::instance();
+        std::string names_1d    = registry_1d.selection() + "|";
+        for (std::size_t begin = 0, end;
+             (end = names_1d.find('|', begin)) != std::string::npos;
+             begin = end + 1)
+          {
+            const std::string name = names_1d.substr(begin, end - begin);
+            if (!registry_2d.has(name))
+              {
+                // Its "name: description" entry of the 1D documentation.
+                const std::string all   = registry_1d.documentation();
+                const auto        first = all.find(name + ": ");
+                const auto        last  = all.find("; ", first);
+                selection += "|" + name;
+                documentation += "; " + name + " (1D only)" +
+                                 all.substr(first + name.size(),
+                                            last == std::string::npos ?
+                                              std::string::npos :
+                                              last - first - name.size());
+              }
+          }
+      }
       prm.enter_subsection("Basis");
       prm.declare_entry("Type",
                         "linear",
-                        Patterns::Selection(
-                          Basis::SpaceRegistry<2>::instance().selection()),
-                        Basis::SpaceRegistry<2>::instance().documentation());
+                        Patterns::Selection(selection),
+                        documentation);
+      prm.declare_entry("Degree",
+                        "2",
+                        Patterns::Integer(1),
+                        "Polynomial degree of Basis/Type = bspline (2 only "
+                        "for MPM); linear and powell-sabin have a fixed "
+                        "degree and ignore it.");
       prm.leave_subsection();
 
       prm.enter_subsection("Initial conditions");
@@ -140,7 +175,8 @@ namespace psmpm
         body.density = state.materials.of_body(body.number).density;
       grid_parameters.parse_parameters(prm);
       prm.enter_subsection("Basis");
-      basis_name = prm.get("Type");
+      basis_name   = prm.get("Type");
+      basis_degree = prm.get_integer("Degree");
       prm.leave_subsection();
       AssertThrow(Basis::SpaceRegistry<dim>::instance().has(basis_name),
                   ExcMessage(
@@ -152,6 +188,7 @@ namespace psmpm
       // transfer is created first: the mass default depends on whether
       // its grid moves; an automatic transfer follows the mass matrix.
       const auto space = Basis::create_space<dim>(basis_name);
+      space->set_degree(basis_degree);
       prm.enter_subsection("Transfer");
       transfer_name = prm.get("Scheme");
       transfer.reset();
@@ -176,7 +213,14 @@ namespace psmpm
       // The choice for a closed, filled mesh is made once the mesh is
       // known (setup_space_and_grid); its transfer is created here, where
       // its parameters are.
-      closed_rule = mass_automatic && !grid_moves;
+      // (Not for a space that was not verified with partially lumped
+      // mass: it keeps its own default.)
+      const auto verified_masses = space->verified_mass_matrices();
+      closed_rule                = mass_automatic && !grid_moves &&
+                    (verified_masses.empty() ||
+                     std::find(verified_masses.begin(),
+                               verified_masses.end(),
+                               "partially lumped") != verified_masses.end());
       closed_transfer_name.clear();
       closed_transfer.reset();
       if (closed_rule)
@@ -281,6 +325,7 @@ namespace psmpm
     Simulator<dim>::setup_space_and_grid()
     {
       state.space = Basis::create_space<dim>(basis_name);
+      state.space->set_degree(basis_degree);
       state.dof_handler.reinit(state.triangulation);
       state.dof_handler.distribute_dofs(state.space->dof_layout());
       state.space->reinit(state.dof_handler);
@@ -319,6 +364,28 @@ namespace psmpm
             transfer = std::move(closed_transfer);
           transfer_name = closed_transfer_name;
         }
+      // A space with a restricted list names what it was verified with.
+      const auto refuse = [&](const std::vector<std::string> &verified,
+                              const std::string              &entry,
+                              const std::string              &value) {
+        if (verified.empty() ||
+            std::find(verified.begin(), verified.end(), value) !=
+              verified.end())
+          return;
+        std::string list;
+        for (const auto &v : verified)
+          list += (list.empty() ? "" : ", ") + v;
+        AssertThrow(false,
+                    ExcMessage(entry + " = " + value +
+                               ": not verified with Basis/Type = " +
+                               basis_name + " (verified: " + list + ")."));
+      };
+      refuse(state.space->verified_mass_matrices(),
+             "Mass matrix/Type",
+             grid_parameters.type);
+      refuse(state.space->verified_transfers(),
+             "Transfer/Scheme",
+             transfer_name);
       closed_rule = false;
       state.grid  = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
                                                              *state.space,

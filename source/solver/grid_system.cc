@@ -33,6 +33,7 @@ namespace psmpm
         Patterns::Selection("automatic|" +
                             MassStrategyRegistry<dim>::instance().selection()),
         "automatic: the basis' measured default (lumped for powell-sabin, "
+        "consistent for bspline (doc/chapter.md), "
         "ghost penalty for linear, partially lumped for linear with a "
         "moving grid (otm); doc/transfers.md); " +
           MassStrategyRegistry<dim>::instance().documentation());
@@ -163,6 +164,7 @@ namespace psmpm
                                            fixed[d],
                                            Functions::ZeroFunction<dim>(),
                                            c);
+          space.make_space_constraints(dof_handler, c);
           c.close();
           active_constraints[d].clear();
           active_constraints[d].copy_from(c);
@@ -179,6 +181,7 @@ namespace psmpm
       local_lumped.assign(relevant_global.size(), 0.);
       scratch.assign(relevant_global.size(), 0.);
 
+      build_ties();
       build_vertex_tables(fixed);
       direct = uses_matrix() &&
                dof_handler.n_dofs() <= parameters.direct_size &&
@@ -191,6 +194,34 @@ namespace psmpm
         }
       else
         cells.mass.clear();
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::build_ties()
+    {
+      // The space's own constraints in local relevant numbering, for the
+      // lumped path, which condenses vectors without AffineConstraints.
+      AffineConstraints<double> c(relevant);
+      space.make_space_constraints(dof_handler, c);
+      c.close();
+      ties.clear();
+      for (unsigned int l = 0; l < relevant_global.size(); ++l)
+        if (c.is_constrained(relevant_global[l]))
+          {
+            Tie         tie{l, {}};
+            const auto *entries = c.get_constraint_entries(relevant_global[l]);
+            bool        local   = true;
+            for (const auto &[j, w] : *entries)
+              if (relevant.is_element(j))
+                tie.targets.emplace_back(relevant.index_within_set(j), w);
+              else
+                local = false;
+            // A tie that reaches outside the relevant DoFs belongs to a
+            // vertex of a ghost cell only, which no owned cell adds to.
+            if (local)
+              ties.push_back(std::move(tie));
+          }
     }
 
     template <int dim>
@@ -498,7 +529,8 @@ namespace psmpm
     GridSystem<dim>::scatter(const double                  *cell_values,
                              const unsigned int             stride,
                              const unsigned int             offset,
-                             TrilinosWrappers::MPI::Vector &target) const
+                             TrilinosWrappers::MPI::Vector &target,
+                             const bool                     condense) const
     {
       // Sum cell contributions locally first, then hand Trilinos one
       // vector: far cheaper than one add() per cell.
@@ -507,6 +539,15 @@ namespace psmpm
         for (unsigned int k = 0; k < dofs_per_cell; ++k)
           scratch[cell_dof_indices[c * dofs_per_cell + k]] +=
             cell_values[(c * dofs_per_cell + k) * stride + offset];
+      if (condense)
+        // C^T b: what a tied DoF collects goes to the DoFs it is tied to.
+        for (const auto &tie : ties)
+          {
+            const double v   = scratch[tie.dof];
+            scratch[tie.dof] = 0;
+            for (const auto &[j, w] : tie.targets)
+              scratch[j] += w * v;
+          }
       if (owned_is_relevant)
         {
           // Nothing to send: the sums are the owned entries (0 + s, as
@@ -559,7 +600,9 @@ namespace psmpm
     void
     GridSystem<dim>::assemble_mass()
     {
-      scatter(cells.lumped.data(), 1, 0, writable);
+      // Row sums of the condensed matrix C^T M C are C^T (M 1) (C 1 = 1:
+      // the ties are convex combinations), the lumped mass of the space.
+      scatter(cells.lumped.data(), 1, 0, writable, true);
       lumped = writable;
       to_local(lumped, local_lumped);
 
@@ -832,7 +875,7 @@ namespace psmpm
             {
               // Tensor<1,dim> stores its components contiguously.
               // The owned entries of all three vectors, in owned order.
-              scatter(&cells.rhs[0][0], dim, d, writable);
+              scatter(&cells.rhs[0][0], dim, d, writable, true);
               const double *const b = writable.begin();
               const double *const m = lumped.begin();
               double *const       v = x.begin();

@@ -1,9 +1,11 @@
 // ---------------------------------------------------------------------
 // psmpm: the spaces register themselves: SpaceRegistry<1> offers
-// "linear", SpaceRegistry<2> "linear|powell-sabin"; create_space<dim>
-// builds them by name, and an unknown name (or a 2D-only space asked for
-// in 1D) throws an error naming the parameter Basis/Type and the known
-// names.
+// "bspline|linear", SpaceRegistry<2> "linear|powell-sabin";
+// create_space<dim> builds them by name, and an unknown name (or a 2D-only
+// space asked for in 1D, or the 1D-only bspline in 2D) throws an error
+// naming the parameter Basis/Type and the known names. The bspline space
+// is verified with lumped and consistent mass and MUSL/USL only, and
+// refuses a Basis/Degree other than 2.
 // ---------------------------------------------------------------------
 #include <deal.II/base/patterns.h>
 
@@ -60,7 +62,7 @@ main()
         << "  " << registry_1d.documentation() << std::endl
         << "2D: " << registry_2d.selection() << std::endl
         << "  " << registry_2d.documentation() << std::endl;
-    PSMPM_CHECK(out, registry_1d.selection() == "linear");
+    PSMPM_CHECK(out, registry_1d.selection() == "bspline|linear");
     PSMPM_CHECK(out, registry_2d.selection() == "linear|powell-sabin");
     PSMPM_CHECK(out, !registry_1d.has("powell-sabin"));
 
@@ -79,18 +81,53 @@ main()
             << space->stability_factor(false) << std::endl;
         PSMPM_CHECK(out, space->name() == name);
       }
+    for (const std::string name : {"linear", "bspline"})
+      {
+        const auto space = Basis::create_space<1>(name);
+        out << "1D " << space->name() << ": dofs per cell "
+            << space->dofs_per_cell() << ", per vertex "
+            << space->dofs_per_vertex() << ", stability factor lumped "
+            << space->stability_factor(true) << ", consistent "
+            << space->stability_factor(false) << ", default mass "
+            << space->default_mass_matrix() << std::endl;
+        PSMPM_CHECK(out, space->name() == name);
+        out << "  verified mass matrices:";
+        for (const auto &m : space->verified_mass_matrices())
+          out << ' ' << m;
+        out << "; transfers:";
+        for (const auto &t : space->verified_transfers())
+          out << ' ' << t;
+        out << std::endl;
+      }
     {
-      const auto space = Basis::create_space<1>("linear");
-      out << "1D " << space->name() << ": dofs per cell "
-          << space->dofs_per_cell() << ", per vertex "
-          << space->dofs_per_vertex() << ", stability factor lumped "
-          << space->stability_factor(true) << ", consistent "
-          << space->stability_factor(false) << std::endl;
-      PSMPM_CHECK(out, space->name() == "linear");
+      // Linear and Powell-Sabin accept every variant (empty lists), the
+      // B-splines only what was verified with them.
+      const auto linear  = Basis::create_space<1>("linear");
+      const auto bspline = Basis::create_space<1>("bspline");
+      PSMPM_CHECK(out, linear->verified_mass_matrices().empty());
+      PSMPM_CHECK(out, bspline->verified_mass_matrices().size() == 2);
+      PSMPM_CHECK(out, bspline->verified_transfers().size() == 2);
+      PSMPM_CHECK(out, bspline->default_mass_matrix() == "consistent");
+      bool refused = false;
+      try
+        {
+          bspline->set_degree(3);
+        }
+      catch (const std::exception &e)
+        {
+          refused =
+            std::string(e.what()).find("Basis/Degree = 3") != std::string::npos;
+        }
+      PSMPM_CHECK(out, refused);
+      linear->set_degree(3); // fixed degree: ignored
+      PSMPM_CHECK(out, linear->degree() == 1);
     }
 
     const std::string unknown_2d = creation_error<2>("quadratic");
     const std::string unknown_1d = creation_error<1>("powell-sabin");
+    const std::string bspline_2d = creation_error<2>("bspline");
+    out << "2D bspline: " << bspline_2d << std::endl;
+    PSMPM_CHECK(out, bspline_2d.find("Basis/Type = bspline") == 0);
     out << "2D quadratic: " << unknown_2d << std::endl
         << "1D powell-sabin: " << unknown_1d << std::endl;
     PSMPM_CHECK(out, unknown_2d.find("Basis/Type = quadratic") == 0);

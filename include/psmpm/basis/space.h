@@ -35,8 +35,9 @@ namespace psmpm
      * returned by dof_layout(), so deal.II's DoFHandler, sparsity
      * patterns, AffineConstraints and parallel index sets apply unchanged;
      * the local order of the functions of a cell is the order of
-     * cell->get_dof_indices(). Every DoF belongs to a vertex
-     * (dofs_per_vertex() of them each).
+     * cell->get_dof_indices(). For the vertex-wise mass strategies every
+     * DoF belongs to a vertex (dofs_per_vertex() of them each); a space
+     * with cell DoFs (bspline) restricts verified_mass_matrices().
      *
      * Cells are addressed by their active_cell_index(). reinit() must be
      * called after DoFHandler::distribute_dofs() and before evaluation.
@@ -76,6 +77,17 @@ namespace psmpm
         return dof_layout().n_dofs_per_vertex();
       }
 
+      /**
+       * Basis/Degree. Spaces of one fixed degree (linear, powell-sabin)
+       * ignore it; a space that implements some degrees only throws an
+       * error naming the entry for the others.
+       */
+      virtual void
+      set_degree(const unsigned int degree)
+      {
+        (void)degree;
+      }
+
       /// Precompute per-cell data for the mesh of @p dof_handler.
       virtual void
       reinit(const DoFHandler<dim> &dof_handler) = 0;
@@ -102,6 +114,22 @@ namespace psmpm
                const Point<dim>   *points,
                double             *values,
                Tensor<1, dim>     *gradients) const;
+
+      /**
+       * Constraints that belong to the space itself, not to boundary
+       * conditions: the ties that make the DoF layout's functions span the
+       * space (bspline: C1 at the interior vertices of a C0 quadratic
+       * layout). GridSystem adds them to the constraints of every
+       * component, for the consistent and the lumped mass alike. Default:
+       * none, so the spaces without ties keep their unconstrained paths.
+       */
+      virtual void
+      make_space_constraints(const DoFHandler<dim>     &dof_handler,
+                             AffineConstraints<double> &constraints) const
+      {
+        (void)dof_handler;
+        (void)constraints;
+      }
 
       /**
        * Add constraints that impose u = g on the boundaries with the given
@@ -177,6 +205,22 @@ namespace psmpm
       {
         (void)mass_matrix;
         return "musl";
+      }
+
+      /**
+       * The Mass matrix/Type and Transfer/Scheme names verified with this
+       * space; the simulator refuses the others as bad input. Empty: all
+       * (linear and powell-sabin, for which every variant was written).
+       */
+      virtual std::vector<std::string>
+      verified_mass_matrices() const
+      {
+        return {};
+      }
+      virtual std::vector<std::string>
+      verified_transfers() const
+      {
+        return {};
       }
     };
 

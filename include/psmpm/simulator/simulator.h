@@ -256,6 +256,7 @@ namespace psmpm
       Particles::ParticleGenerator<dim>            particle_generator;
       typename Solver::GridSystem<dim>::Parameters grid_parameters;
       std::string                                  basis_name;
+      unsigned int                                 basis_degree = 2;
       std::string                                  transfer_name;
       /// Whether `automatic` takes partially lumped mass with
       /// closed_transfer (nullptr: the transfer chosen already) named

@@ -303,11 +303,16 @@ namespace psmpm
       const unsigned int n_cells;
 
     private:
+      /// Sum the per-cell values into @p target; with @p condense, apply
+      /// the space's ties (C^T) first, as the lumped path needs.
       void
       scatter(const double                  *cell_values,
               const unsigned int             stride,
               const unsigned int             offset,
-              TrilinosWrappers::MPI::Vector &target) const;
+              TrilinosWrappers::MPI::Vector &target,
+              const bool                     condense = false) const;
+      void
+      build_ties();
       void
       to_local(const TrilinosWrappers::MPI::Vector &owned_vector,
                std::vector<double>                 &local) const;
@@ -403,6 +408,15 @@ namespace psmpm
       std::vector<double> local_full_diagonal;
       SolveStatistics     stats;
       double              density = 0;
+      /// Space::make_space_constraints() in local relevant numbering: a
+      /// tied DoF and the DoFs and weights it is tied to (empty for spaces
+      /// without ties, whose lumped path is then unchanged).
+      struct Tie
+      {
+        unsigned int                                 dof;
+        std::vector<std::pair<unsigned int, double>> targets;
+      };
+      std::vector<Tie> ties;
     };
   } // namespace Solver
 } // namespace psmpm

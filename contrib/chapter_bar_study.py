@@ -1,0 +1,229 @@
+#!/usr/bin/python3
+"""Convergence of MPM and BSMPM on the vibrating bar of Wobbes et al. 2019
+(book chapter, section 4.5, Table 4.1; prm/chapter_bar_1d.prm).
+
+Runs build/psmpm for 5, 10, 20, 40 elements with Basis/Type = linear (MPM,
+lumped mass) and bspline (BSMPM, quadratic B-splines, lumped and
+consistent mass), MUSL, reads the
+RMS errors of displacement, velocity and stress at T = 1.9e-6 s from
+summary.json, and writes the table with the observed rates and the CPU
+(user + sys of the child, getrusage) and wall seconds of every run into
+doc/chapter.md (between the table markers) and a plot into
+doc/images/chapter_bar_convergence.png.
+
+    /usr/bin/python3 contrib/chapter_bar_study.py [--psmpm build/psmpm]
+        [--no-write] [--stability]
+
+With --stability it instead bisects the largest stable fixed time step of
+BSMPM (and MPM for comparison) on the bar of 10 elements, lumped and
+consistent mass, with fixed and with free ends (2000 steps; stable: the
+run completes without tripping a stability monitor), and prints it over
+h / c_p: the measurement behind Basis::BSpline::stability_factor().
+
+Debian python3 with numpy and matplotlib only.
+"""
+import argparse
+import json
+import math
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ELEMENTS = [5, 10, 20, 40]
+METHODS = [("MPM", "linear"), ("BSMPM", "bspline")]
+# The chapter's MPM and BSMPM (lumped mass, its "standard mapping") and
+# BSMPM with consistent mass, psmpm's default for bspline.
+CONVERGENCE = [("MPM lumped", "linear", "lumped"),
+               ("BSMPM lumped", "bspline", "lumped"),
+               ("BSMPM consistent", "bspline", "consistent")]
+BEGIN = "<!-- chapter_bar_study table begin -->"
+END = "<!-- chapter_bar_study table end -->"
+
+
+def run(psmpm, basis, elements, mass, directory):
+    """One run; returns (errors dict, cpu seconds, wall seconds)."""
+    out = os.path.join(directory, "%s-%s-%d" % (basis, mass, elements))
+    command = [psmpm, os.path.join(ROOT, "prm", "chapter_bar_1d.prm"),
+               "--set", "Basis/Type=" + basis,
+               "--set", "Mesh/Blocks x=%d" % elements,
+               "--set", "Mass matrix/Type=" + mass,
+               "--set", "Output directory=" + out]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    result = subprocess.run(command, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if result.returncode != 0:
+        sys.exit("psmpm failed (%d): %s\n%s" % (result.returncode,
+                                               " ".join(command),
+                                               result.stdout))
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    errors = summary["errors"]
+    return ({"u": errors["displacement_L2"], "v": errors["velocity_L2"],
+             "s": errors["stress_L2"]}, cpu, wall)
+
+
+def stable(psmpm, basis, mass, fixed, dt, directory):
+    out = os.path.join(directory, "stability")
+    command = [psmpm, os.path.join(ROOT, "prm", "chapter_bar_1d.prm"),
+               "--set", "Basis/Type=" + basis,
+               "--set", "Mass matrix/Type=" + mass,
+               "--set", "Boundary conditions/Fixed x=" + fixed,
+               # Free ends: the free-free mode, which does not drift away.
+               "--set", "Initial conditions/Velocity=" +
+               ("v0*sin(pi*x/L)" if fixed else "v0*cos(pi*x/L)"),
+               "--set", "Reference solution/Type=none",
+               "--set", "Time/Check stability bound=false",
+               "--set", "Time/Time step=%.17g" % dt,
+               "--set", "Time/End time=%.17g" % (2000.5 * dt),
+               "--set", "Output directory=" + out]
+    result = subprocess.run(command, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    # 3-7: a stability monitor stopped the run (doc: README exit codes).
+    if result.returncode not in (0, 3, 4, 5, 6, 7):
+        sys.exit("psmpm failed (%d): %s" % (result.returncode,
+                                            " ".join(command)))
+    return result.returncode == 0
+
+
+def stability(psmpm):
+    """Bisection of dt c_p / h on 10 elements of the chapter bar."""
+    h_over_c = 0.1 / math.sqrt(7e6 / 2000)
+    print("| method | mass | ends | largest stable dt c_p / h |")
+    print("| --- | --- | --- | --- |")
+    with tempfile.TemporaryDirectory() as directory:
+        for name, basis in METHODS:
+            for mass in ("lumped", "consistent"):
+                for ends, fixed in (("fixed", "left, right"), ("free", "")):
+                    lo, hi = 0.05, 2.0
+                    for _ in range(14):
+                        mid = 0.5 * (lo + hi)
+                        if stable(psmpm, basis, mass, fixed, mid * h_over_c,
+                                  directory):
+                            lo = mid
+                        else:
+                            hi = mid
+                    print("| %s | %s | %s | %.3f |" % (name, mass, ends, lo),
+                          flush=True)
+
+
+def eigenvalue_bound(n=40):
+    """2 / omega_max over h / c of the exact quadratic B-spline system on
+    n elements of the bar (Bezier extraction as in Basis::BSpline), lumped
+    and consistent mass, fixed and free ends: the linear stability limit
+    of central differences without particle quadrature."""
+    import numpy as np
+    h = 1.0 / n
+    g, w = np.polynomial.legendre.leggauss(4)
+    t, w = (g + 1) / 2, w / 2
+    B = np.array([(1 - t) ** 2, t ** 2, 2 * t * (1 - t)])
+    dB = np.array([-2 * (1 - t), 2 * t, 2 * (1 - 2 * t)]) / h
+    M = np.zeros((2 * n + 1, 2 * n + 1))
+    K = np.zeros_like(M)
+    for c in range(n):
+        d = [c, c + 1, n + 1 + c]
+        M[np.ix_(d, d)] += h * np.einsum("aq,bq,q->ab", B, B, w)
+        K[np.ix_(d, d)] += h * np.einsum("aq,bq,q->ab", dB, dB, w)
+    free = [0] + [n + 1 + c for c in range(n)] + [n]
+    C = np.zeros((2 * n + 1, n + 2))
+    for j, f in enumerate(free):
+        C[f, j] = 1
+    for v in range(1, n):
+        C[v, free.index(n + v)] = C[v, free.index(n + 1 + v)] = 0.5
+    M, K = C.T @ M @ C, C.T @ K @ C
+    print("| mass | ends | 2 / omega_max over h / c |")
+    print("| --- | --- | --- |")
+    for mass in ("lumped", "consistent"):
+        for ends in ("fixed", "free"):
+            m, k = (M[1:-1, 1:-1], K[1:-1, 1:-1]) if ends == "fixed" else (M, K)
+            if mass == "lumped":
+                m = np.diag(m.sum(axis=1))
+            lam = max(np.linalg.eigvals(np.linalg.solve(m, k)).real)
+            print("| %s | %s | %.3f |" % (mass, ends, 2 / math.sqrt(lam) / h))
+
+
+def rate(e_coarse, e_fine):
+    return math.log2(e_coarse / e_fine)
+
+
+def table(results):
+    lines = ["| method | elements | u RMS error | rate | v RMS error | rate "
+             "| stress RMS error | rate | CPU s | wall s |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for name, basis, mass in CONVERGENCE:
+        rows = results[name]
+        for i, n in enumerate(ELEMENTS):
+            e, cpu, wall = rows[i]
+            cells = [name, str(n)]
+            for q in "uvs":
+                cells.append("%.3e" % e[q])
+                cells.append("-" if i == 0 else
+                             "%.2f" % rate(rows[i - 1][0][q], e[q]))
+            cells += ["%.2f" % cpu, "%.2f" % wall]
+            lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def plot(results, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 3, figsize=(12, 3.8))
+    for ax, q, title in zip(axes, "uvs",
+                            ["displacement", "velocity", "stress"]):
+        for (name, _, _), marker in zip(CONVERGENCE, "os^"):
+            ax.loglog(ELEMENTS, [r[0][q] for r in results[name]],
+                      marker + "-", label=name)
+        ax.set_xticks(ELEMENTS)
+        ax.set_xticklabels([str(n) for n in ELEMENTS])
+        ax.minorticks_off()
+        ax.set_xlabel("elements")
+        ax.set_title(title + " RMS error")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--psmpm", default=os.path.join(ROOT, "build",
+                                                        "psmpm"))
+    parser.add_argument("--no-write", action="store_true",
+                        help="print the table only")
+    parser.add_argument("--stability", action="store_true",
+                        help="bisect the stable time step instead")
+    args = parser.parse_args()
+    if args.stability:
+        eigenvalue_bound()
+        stability(args.psmpm)
+        return
+    results = {}
+    with tempfile.TemporaryDirectory() as directory:
+        for name, basis, mass in CONVERGENCE:
+            results[name] = [run(args.psmpm, basis, n, mass, directory)
+                             for n in ELEMENTS]
+    text = table(results)
+    print(text)
+    if args.no_write:
+        return
+    doc = os.path.join(ROOT, "doc", "chapter.md")
+    with open(doc) as f:
+        content = f.read()
+    begin, end = content.index(BEGIN), content.index(END)
+    content = (content[:begin + len(BEGIN)] + "\n" + text + content[end:])
+    with open(doc, "w") as f:
+        f.write(content)
+    plot(results,
+         os.path.join(ROOT, "doc", "images", "chapter_bar_convergence.png"))
+
+
+if __name__ == "__main__":
+    main()
