@@ -35,6 +35,15 @@ namespace psmpm
       {
         return Utilities::split_string_list(s, ',');
       }
+
+      /// Whether @p value is on a space's list of verified mass matrices
+      /// or transfers (an empty list: every one is).
+      bool
+      verified(const std::vector<std::string> &list, const std::string &value)
+      {
+        return list.empty() ||
+               std::find(list.begin(), list.end(), value) != list.end();
+      }
     } // namespace
 
     template <int dim>
@@ -65,33 +74,17 @@ namespace psmpm
 
       // Basis/Type lists the spaces of both dimensions (bspline is 1D
       // only, powell-sabin 2D only); creation rejects the wrong one.
-      std::string selection = Basis::SpaceRegistry<2>::instance().selection();
-      std::string documentation =
-        Basis::SpaceRegistry<2>::instance().documentation();
-      {
-        const auto &registry_1d = Basis::SpaceRegistry<1>::instance();
-        const auto &registry_2d = Basis::SpaceRegistry<2>::instance();
-        std::string names_1d    = registry_1d.selection() + "|";
-        for (std::size_t begin = 0, end;
-             (end = names_1d.find('|', begin)) != std::string::npos;
-             begin = end + 1)
+      const auto &registry_1d   = Basis::SpaceRegistry<1>::instance();
+      const auto &registry_2d   = Basis::SpaceRegistry<2>::instance();
+      std::string selection     = registry_2d.selection();
+      std::string documentation = registry_2d.documentation();
+      for (const auto &name : registry_1d.variant_names())
+        if (!registry_2d.has(name))
           {
-            const std::string name = names_1d.substr(begin, end - begin);
-            if (!registry_2d.has(name))
-              {
-                // Its "name: description" entry of the 1D documentation.
-                const std::string all   = registry_1d.documentation();
-                const auto        first = all.find(name + ": ");
-                const auto        last  = all.find("; ", first);
-                selection += "|" + name;
-                documentation += "; " + name + " (1D only)" +
-                                 all.substr(first + name.size(),
-                                            last == std::string::npos ?
-                                              std::string::npos :
-                                              last - first - name.size());
-              }
+            selection += "|" + name;
+            documentation +=
+              "; " + name + " (1D only): " + registry_1d.description(name);
           }
-      }
       prm.enter_subsection("Basis");
       prm.declare_entry("Type",
                         "linear",
@@ -215,12 +208,9 @@ namespace psmpm
       // its parameters are.
       // (Not for a space that was not verified with partially lumped
       // mass: it keeps its own default.)
-      const auto verified_masses = space->verified_mass_matrices();
-      closed_rule                = mass_automatic && !grid_moves &&
-                    (verified_masses.empty() ||
-                     std::find(verified_masses.begin(),
-                               verified_masses.end(),
-                               "partially lumped") != verified_masses.end());
+      closed_rule =
+        mass_automatic && !grid_moves &&
+        verified(space->verified_mass_matrices(), "partially lumped");
       closed_transfer_name.clear();
       closed_transfer.reset();
       if (closed_rule)
@@ -365,15 +355,13 @@ namespace psmpm
           transfer_name = closed_transfer_name;
         }
       // A space with a restricted list names what it was verified with.
-      const auto refuse = [&](const std::vector<std::string> &verified,
+      const auto refuse = [&](const std::vector<std::string> &accepted,
                               const std::string              &entry,
                               const std::string              &value) {
-        if (verified.empty() ||
-            std::find(verified.begin(), verified.end(), value) !=
-              verified.end())
+        if (verified(accepted, value))
           return;
         std::string list;
-        for (const auto &v : verified)
+        for (const auto &v : accepted)
           list += (list.empty() ? "" : ", ") + v;
         AssertThrow(false,
                     ExcMessage(entry + " = " + value +

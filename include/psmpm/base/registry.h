@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace psmpm
 {
@@ -80,6 +81,23 @@ namespace psmpm
     names() const
     {
       return join(", ");
+    }
+
+    /// The variants' names, sorted.
+    std::vector<std::string>
+    variant_names() const
+    {
+      std::vector<std::string> names;
+      for (const auto &e : entries)
+        names.push_back(e.first);
+      return names;
+    }
+
+    /// The description of the variant @p name, which must exist.
+    const std::string &
+    description(const std::string &name) const
+    {
+      return entries.at(name).description;
     }
 
     /// One line per variant: "name: description".
