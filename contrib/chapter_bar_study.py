@@ -12,13 +12,21 @@ doc/chapter.md (between the table markers) and a plot into
 doc/images/chapter_bar_convergence.png.
 
     /usr/bin/python3 contrib/chapter_bar_study.py [--psmpm build/psmpm]
-        [--no-write] [--stability]
+        [--no-write] [--stability] [--degree P [P ...]]
 
 With --stability it instead bisects the largest stable fixed time step of
 BSMPM (and MPM for comparison) on the bar of 10 elements, lumped and
 consistent mass, with fixed and with free ends (2000 steps; stable: the
 run completes without tripping a stability monitor), and prints it over
 h / c_p: the measurement behind Basis::BSpline::stability_factor().
+
+With --degree P [P ...] (Basis/Degree of bspline; without it, quadratic
+as above and the output is that of the quadratic study) the convergence
+study runs BSMPM of each degree P with consistent mass (and lumped mass
+for P <= 2, the only degrees that verify it) and writes its table into
+doc/chapter.md between the higher-degree markers; --stability bisects
+the stable step of BSMPM of each degree P only (consistent mass, and
+lumped for P <= 2) after the eigenvalue bound of degree P.
 
 Debian python3 with numpy and matplotlib only.
 """
@@ -42,13 +50,22 @@ CONVERGENCE = [("MPM lumped", "linear", "lumped"),
                ("BSMPM consistent", "bspline", "consistent")]
 BEGIN = "<!-- chapter_bar_study table begin -->"
 END = "<!-- chapter_bar_study table end -->"
+DEGREE_BEGIN = "<!-- chapter_bar_study degree table begin -->"
+DEGREE_END = "<!-- chapter_bar_study degree table end -->"
 
 
-def run(psmpm, basis, elements, mass, directory):
+def masses(degree):
+    """Mass matrices verified with bspline of this degree."""
+    return ("lumped", "consistent") if degree <= 2 else ("consistent",)
+
+
+def run(psmpm, basis, elements, mass, directory, degree=2):
     """One run; returns (errors dict, cpu seconds, wall seconds)."""
-    out = os.path.join(directory, "%s-%s-%d" % (basis, mass, elements))
+    out = os.path.join(directory, "%s-%d-%s-%d" % (basis, degree, mass,
+                                                   elements))
     command = [psmpm, os.path.join(ROOT, "prm", "chapter_bar_1d.prm"),
                "--set", "Basis/Type=" + basis,
+               "--set", "Basis/Degree=%d" % degree,
                "--set", "Mesh/Blocks x=%d" % elements,
                "--set", "Mass matrix/Type=" + mass,
                "--set", "Output directory=" + out]
@@ -70,10 +87,11 @@ def run(psmpm, basis, elements, mass, directory):
              "s": errors["stress_L2"]}, cpu, wall)
 
 
-def stable(psmpm, basis, mass, fixed, dt, directory):
+def stable(psmpm, basis, mass, fixed, dt, directory, degree=2):
     out = os.path.join(directory, "stability")
     command = [psmpm, os.path.join(ROOT, "prm", "chapter_bar_1d.prm"),
                "--set", "Basis/Type=" + basis,
+               "--set", "Basis/Degree=%d" % degree,
                "--set", "Mass matrix/Type=" + mass,
                "--set", "Boundary conditions/Fixed x=" + fixed,
                # Free ends: the free-free mode, which does not drift away.
@@ -93,54 +111,84 @@ def stable(psmpm, basis, mass, fixed, dt, directory):
     return result.returncode == 0
 
 
-def stability(psmpm):
-    """Bisection of dt c_p / h on 10 elements of the chapter bar."""
+def stability(psmpm, degrees=None):
+    """Bisection of dt c_p / h on 10 elements of the chapter bar: MPM and
+    quadratic BSMPM, or BSMPM of the given degrees."""
     h_over_c = 0.1 / math.sqrt(7e6 / 2000)
+    if degrees is None:
+        cases = [(name, basis, 2, mass) for name, basis in METHODS
+                 for mass in ("lumped", "consistent")]
+    else:
+        cases = [("BSMPM p=%d" % p, "bspline", p, mass) for p in degrees
+                 for mass in masses(p)]
     print("| method | mass | ends | largest stable dt c_p / h |")
     print("| --- | --- | --- | --- |")
     with tempfile.TemporaryDirectory() as directory:
-        for name, basis in METHODS:
-            for mass in ("lumped", "consistent"):
-                for ends, fixed in (("fixed", "left, right"), ("free", "")):
-                    lo, hi = 0.05, 2.0
-                    for _ in range(14):
-                        mid = 0.5 * (lo + hi)
-                        if stable(psmpm, basis, mass, fixed, mid * h_over_c,
-                                  directory):
-                            lo = mid
-                        else:
-                            hi = mid
-                    print("| %s | %s | %s | %.3f |" % (name, mass, ends, lo),
-                          flush=True)
+        for name, basis, degree, mass in cases:
+            for ends, fixed in (("fixed", "left, right"), ("free", "")):
+                lo, hi = 0.05, 2.0
+                for _ in range(14):
+                    mid = 0.5 * (lo + hi)
+                    if stable(psmpm, basis, mass, fixed, mid * h_over_c,
+                              directory, degree):
+                        lo = mid
+                    else:
+                        hi = mid
+                print("| %s | %s | %s | %.3f |" % (name, mass, ends, lo),
+                      flush=True)
 
 
-def eigenvalue_bound(n=40):
-    """2 / omega_max over h / c of the exact quadratic B-spline system on
-    n elements of the bar (Bezier extraction as in Basis::BSpline), lumped
-    and consistent mass, fixed and free ends: the linear stability limit
-    of central differences without particle quadrature."""
+def bspline_matrices(p, n):
+    """Mass and stiffness matrices of the n + p B-splines of degree p on
+    the open uniform knot vector of [0, 1] with n elements (Cox-de Boor at
+    p + 1 Gauss points per element)."""
+    import numpy as np
+    t = np.concatenate([np.zeros(p), np.linspace(0, 1, n + 1), np.ones(p)])
+    g, w = np.polynomial.legendre.leggauss(p + 1)
+    M = np.zeros((n + p, n + p))
+    K = np.zeros_like(M)
+    for e in range(n):
+        mu = e + p
+        for gq, wq in zip(g, w):
+            x = t[mu] + (gq + 1) / 2 * (t[mu + 1] - t[mu])
+            jw = wq / 2 * (t[mu + 1] - t[mu])
+            # N[k][r]: B_{mu-k+r, k}(x); derivatives from degree p - 1.
+            N = [np.array([1.0])]
+            for k in range(1, p + 1):
+                prev, cur = N[-1], np.zeros(k + 1)
+                for r in range(k + 1):
+                    i = mu - k + r
+                    if r >= 1:
+                        cur[r] += (x - t[i]) / (t[i + k] - t[i]) * prev[r - 1]
+                    if r < k:
+                        cur[r] += ((t[i + k + 1] - x) /
+                                   (t[i + k + 1] - t[i + 1]) * prev[r])
+                N.append(cur)
+            dN = np.zeros(p + 1)
+            for r in range(p + 1):
+                i = mu - p + r
+                if r >= 1:
+                    dN[r] += p / (t[i + p] - t[i]) * N[p - 1][r - 1]
+                if r < p:
+                    dN[r] -= p / (t[i + p + 1] - t[i + 1]) * N[p - 1][r]
+            d = slice(mu - p, mu + 1)
+            M[d, d] += jw * np.outer(N[p], N[p])
+            K[d, d] += jw * np.outer(dN, dN)
+    return M, K
+
+
+def eigenvalue_bound(p=2, n=40):
+    """2 / omega_max over h / c of the exact B-spline system of degree p
+    on n elements of the bar, lumped (row sums of the B-splines' mass
+    matrix; p <= 2 only, the degrees that verify it) and consistent mass,
+    fixed and free ends: the linear stability limit of central
+    differences without particle quadrature."""
     import numpy as np
     h = 1.0 / n
-    g, w = np.polynomial.legendre.leggauss(4)
-    t, w = (g + 1) / 2, w / 2
-    B = np.array([(1 - t) ** 2, t ** 2, 2 * t * (1 - t)])
-    dB = np.array([-2 * (1 - t), 2 * t, 2 * (1 - 2 * t)]) / h
-    M = np.zeros((2 * n + 1, 2 * n + 1))
-    K = np.zeros_like(M)
-    for c in range(n):
-        d = [c, c + 1, n + 1 + c]
-        M[np.ix_(d, d)] += h * np.einsum("aq,bq,q->ab", B, B, w)
-        K[np.ix_(d, d)] += h * np.einsum("aq,bq,q->ab", dB, dB, w)
-    free = [0] + [n + 1 + c for c in range(n)] + [n]
-    C = np.zeros((2 * n + 1, n + 2))
-    for j, f in enumerate(free):
-        C[f, j] = 1
-    for v in range(1, n):
-        C[v, free.index(n + v)] = C[v, free.index(n + 1 + v)] = 0.5
-    M, K = C.T @ M @ C, C.T @ K @ C
+    M, K = bspline_matrices(p, n)
     print("| mass | ends | 2 / omega_max over h / c |")
     print("| --- | --- | --- |")
-    for mass in ("lumped", "consistent"):
+    for mass in masses(p):
         for ends in ("fixed", "free"):
             m, k = (M[1:-1, 1:-1], K[1:-1, 1:-1]) if ends == "fixed" else (M, K)
             if mass == "lumped":
@@ -153,11 +201,11 @@ def rate(e_coarse, e_fine):
     return math.log2(e_coarse / e_fine)
 
 
-def table(results):
+def table(results, names):
     lines = ["| method | elements | u RMS error | rate | v RMS error | rate "
              "| stress RMS error | rate | CPU s | wall s |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for name, basis, mass in CONVERGENCE:
+    for name in names:
         rows = results[name]
         for i, n in enumerate(ELEMENTS):
             e, cpu, wall = rows[i]
@@ -200,29 +248,43 @@ def main():
                         help="print the table only")
     parser.add_argument("--stability", action="store_true",
                         help="bisect the stable time step instead")
+    parser.add_argument("--degree", type=int, nargs="+",
+                        help="Basis/Degree of BSMPM (default: the "
+                        "quadratic study with MPM)")
     args = parser.parse_args()
     if args.stability:
-        eigenvalue_bound()
-        stability(args.psmpm)
+        for p in args.degree or [2]:
+            eigenvalue_bound(p)
+        stability(args.psmpm, args.degree)
         return
+    if args.degree:
+        cases = [("BSMPM p=%d %s" % (p, mass), "bspline", mass, p)
+                 for p in args.degree for mass in masses(p)]
+        begin_marker, end_marker = DEGREE_BEGIN, DEGREE_END
+    else:
+        cases = [(name, basis, mass, 2) for name, basis, mass in CONVERGENCE]
+        begin_marker, end_marker = BEGIN, END
     results = {}
     with tempfile.TemporaryDirectory() as directory:
-        for name, basis, mass in CONVERGENCE:
-            results[name] = [run(args.psmpm, basis, n, mass, directory)
+        for name, basis, mass, degree in cases:
+            results[name] = [run(args.psmpm, basis, n, mass, directory,
+                                 degree)
                              for n in ELEMENTS]
-    text = table(results)
+    text = table(results, [case[0] for case in cases])
     print(text)
     if args.no_write:
         return
     doc = os.path.join(ROOT, "doc", "chapter.md")
     with open(doc) as f:
         content = f.read()
-    begin, end = content.index(BEGIN), content.index(END)
-    content = (content[:begin + len(BEGIN)] + "\n" + text + content[end:])
+    begin, end = content.index(begin_marker), content.index(end_marker)
+    content = (content[:begin + len(begin_marker)] + "\n" + text +
+               content[end:])
     with open(doc, "w") as f:
         f.write(content)
-    plot(results,
-         os.path.join(ROOT, "doc", "images", "chapter_bar_convergence.png"))
+    if not args.degree:
+        plot(results, os.path.join(ROOT, "doc", "images",
+                                   "chapter_bar_convergence.png"))
 
 
 if __name__ == "__main__":

@@ -93,9 +93,9 @@ namespace psmpm
       prm.declare_entry("Degree",
                         "2",
                         Patterns::Integer(1),
-                        "Polynomial degree of Basis/Type = bspline (2 only "
-                        "for MPM); linear and powell-sabin have a fixed "
-                        "degree and ignore it.");
+                        "Polynomial degree of Basis/Type = bspline (1 to 5; "
+                        "lumped mass for 1 and 2 only); linear and "
+                        "powell-sabin have a fixed degree and ignore it.");
       prm.leave_subsection();
 
       prm.enter_subsection("Initial conditions");
@@ -354,7 +354,8 @@ namespace psmpm
             transfer = std::move(closed_transfer);
           transfer_name = closed_transfer_name;
         }
-      // A space with a restricted list names what it was verified with.
+      // A space with a restricted list names what it was verified with
+      // (and the degree: bspline's list depends on it).
       const auto refuse = [&](const std::vector<std::string> &accepted,
                               const std::string              &entry,
                               const std::string              &value) {
@@ -364,9 +365,11 @@ namespace psmpm
         for (const auto &v : accepted)
           list += (list.empty() ? "" : ", ") + v;
         AssertThrow(false,
-                    ExcMessage(entry + " = " + value +
-                               ": not verified with Basis/Type = " +
-                               basis_name + " (verified: " + list + ")."));
+                    ExcMessage(
+                      entry + " = " + value +
+                      ": not verified with Basis/Type = " + basis_name +
+                      ", Basis/Degree = " + std::to_string(basis_degree) +
+                      " (verified: " + list + ")."));
       };
       refuse(state.space->verified_mass_matrices(),
              "Mass matrix/Type",
