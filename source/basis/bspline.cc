@@ -305,7 +305,8 @@ namespace psmpm
       // (those next to its right vertex, where B-spline n + p - 1 - m
       // vanishes to order m: a triangular block); the end vertex DoFs are
       // the end B-splines' coefficients. Every other DoF is E times these,
-      // which ties it to free DoFs of at most three cells nearby.
+      // which ties it to free DoFs of cells at most p - 1 cells away (the
+      // blocks that hold its cell's p + 1 B-splines).
       const unsigned int n = dof_handler.get_triangulation().n_active_cells();
       AssertThrow(extraction.size() == n,
                   ExcMessage("BSpline::make_space_constraints: call reinit() "

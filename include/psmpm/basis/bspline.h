@@ -83,8 +83,8 @@ namespace psmpm
       const FiniteElement<1> &
       dof_layout() const override;
 
-      /// Cell geometry; for p >= 3 also the knot vector and the Bezier
-      /// extraction operators (the mesh must be one interval).
+      /// Cell geometry, the knot vector and the Bezier extraction
+      /// operators (the mesh must be one interval).
       void
       reinit(const DoFHandler<1> &dof_handler) override;
 
@@ -158,10 +158,11 @@ namespace psmpm
       verified_transfers() const override;
 
       /**
-       * Bezier extraction of cell @p cell (active index; p >= 3 only,
-       * after reinit()): entry (k, i) is the coefficient of local DoF k
-       * (layout order) in B-spline first_bspline(cell) + i, i = 0, ..., p,
-       * the B-splines being numbered from the left end of the mesh.
+       * Bezier extraction of cell @p cell (active index, after reinit()):
+       * entry (k, i) is the coefficient of local DoF k (layout order) in
+       * B-spline first_bspline(cell) + i, i = 0, ..., p, the B-splines
+       * being numbered from the left end of the mesh. The ties of p >= 3
+       * are built from it; tests assemble the B-splines with it.
        */
       const FullMatrix<double> &
       bezier_extraction(const unsigned int cell) const;
@@ -184,7 +185,7 @@ namespace psmpm
       };
       std::vector<CellData> cell_data;
 
-      /// p >= 3: position of each cell from the left end, and its Bezier
+      /// Position of each cell from the left end, and its Bezier
       /// extraction operator (see bezier_extraction()).
       std::vector<unsigned int>       position;
       std::vector<FullMatrix<double>> extraction;
