@@ -13,6 +13,7 @@
 #include <psmpm/mesh/confinement.h>
 #include <psmpm/postprocess/body_statistics.h>
 #include <psmpm/postprocess/progress.h>
+#include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/simulator.h>
 
 #include <algorithm>
@@ -183,7 +184,15 @@ namespace psmpm
       const auto space = Basis::create_space<dim>(basis_name);
       space->set_degree(basis_degree);
       prm.enter_subsection("Transfer");
-      transfer_name = prm.get("Scheme");
+      transfer_name       = prm.get("Scheme");
+      reconstruction_name = prm.get("Reconstruction");
+      reconstruction.reset();
+      if (reconstruction_name != "particles")
+        reconstruction =
+          ReconstructionRegistry<dim>::instance().create(reconstruction_name,
+                                                         "Transfer/"
+                                                         "Reconstruction",
+                                                         prm);
       transfer.reset();
       if (transfer_name != "automatic")
         transfer =
@@ -308,6 +317,8 @@ namespace psmpm
       setup_particles();
       state.evaluate_shape_functions();
       transfer->initialize(state);
+      if (state.reconstruction)
+        state.reconstruction->initialize(state);
     }
 
     template <int dim>
@@ -377,6 +388,31 @@ namespace psmpm
       refuse(state.space->verified_transfers(),
              "Transfer/Scheme",
              transfer_name);
+      // A reconstruction names what it was verified with as well.
+      state.reconstruction.reset();
+      if (reconstruction_name != "particles")
+        {
+          state.reconstruction   = std::move(reconstruction);
+          const auto refuse_with = [&](const std::vector<std::string> &list,
+                                       const std::string              &entry,
+                                       const std::string              &value) {
+            std::string names;
+            for (const auto &v : list)
+              names += (names.empty() ? "" : ", ") + v;
+            AssertThrow(verified(list, value),
+                        ExcMessage(entry + " = " + value +
+                                   ": not verified with Transfer/"
+                                   "Reconstruction = " +
+                                   reconstruction_name +
+                                   " (verified: " + names + ")."));
+          };
+          refuse_with(state.reconstruction->verified_mass_matrices(),
+                      "Mass matrix/Type",
+                      grid_parameters.type);
+          refuse_with(state.reconstruction->verified_transfers(),
+                      "Transfer/Scheme",
+                      transfer_name);
+        }
       closed_rule = false;
       state.grid  = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
                                                              *state.space,
@@ -485,6 +521,7 @@ namespace psmpm
                                " left the mesh at (" + where + ")");
               continue; // keep its old cell; the run stops after this step
             }
+          cell_crossings += c != particles.cell[p];
           particles.cell[p] = c;
           if (n_ranks > 1 && state.cell_owner[c] != rank)
             {
@@ -542,6 +579,9 @@ namespace psmpm
     {
       if (!reference)
         return {};
+      // A reference computed alongside (ULFEM) must be at the state's
+      // time; it only moves forward, so this is a no-op after a run step.
+      reference->advance_to(state.time);
       return Postprocess::ErrorNorms<dim>::compute(state, *reference);
     }
 
@@ -1055,6 +1095,8 @@ namespace psmpm
                           Utilities::MPI::sum(state.particles.size(), comm));
       summary.set_integer("n_mpi_ranks", Utilities::MPI::n_mpi_processes(comm));
       summary.set_integer("cg_iterations", total_iterations);
+      summary.set_integer("cell_crossings",
+                          Utilities::MPI::sum(cell_crossings, comm));
       summary.set("end_time", state.time);
       summary.set("time_step", time_step_control.get_time_step());
       summary.set("time_step_min", time_step_control.get_min_time_step());
@@ -1062,6 +1104,7 @@ namespace psmpm
       summary.set("basis", state.space->name());
       summary.set("mass_matrix", grid_parameters.type);
       summary.set("transfer", transfer_name);
+      summary.set("reconstruction", reconstruction_name);
       summary.set("material", state.materials.model_names());
       rotation_statistics.fill_summary(summary);
       if (reference)

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/state.h>
 
 namespace psmpm
@@ -21,6 +22,7 @@ namespace psmpm
     State<dim>::~State()
     {
       // The grid system refers to the DoF handler.
+      reconstruction.reset();
       grid.reset();
       dof_handler.clear();
     }

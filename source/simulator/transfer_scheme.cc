@@ -4,6 +4,8 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/simulator/point_accumulation.h>
+#include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
 namespace psmpm
@@ -24,6 +26,7 @@ namespace psmpm
         "lumped mass, musl otherwise; doc/transfers.md); " +
           TransferSchemeRegistry<dim>::instance().documentation());
       TransferSchemeRegistry<dim>::instance().declare_parameters(prm);
+      Reconstruction<dim>::declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -62,6 +65,14 @@ namespace psmpm
       auto             &grid = *state.grid;
       grid.zero_cell_mass();
       grid.zero_cell_rhs();
+      if (state.reconstruction)
+        {
+          state.reconstruction->mass_and_forces(state,
+                                                momentum_weight,
+                                                force_weight);
+          grid.assemble_mass();
+          return;
+        }
       const auto        &particles  = state.particles;
       const unsigned int n          = grid.dofs_per_cell;
       auto              &cells      = grid.cell_arrays();
@@ -79,23 +90,18 @@ namespace psmpm
           const Tensor<1, dim> momentum =
             momentum_weight != 0 ? momentum_weight * m * particles.velocity[p] :
                                    Tensor<1, dim>();
-          const Tensor<1, dim>  external = force_weight * m * state.gravity;
-          const double          volume   = force_weight * particles.volume[p];
-          const double         *phi      = &state.shape_values[p * n];
-          const Tensor<1, dim> *grad     = &state.shape_gradients[p * n];
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              lumped[base + k] += m * phi[k];
-              rhs[base + k] +=
-                phi[k] * (momentum + external) - volume * (s * grad[k]);
-              if (consistent)
-                {
-                  double      *row = mass_mat + (base + k) * n;
-                  const double mk  = m * phi[k];
-                  for (unsigned int l = 0; l < n; ++l)
-                    row[l] += mk * phi[l];
-                }
-            }
+          const Tensor<1, dim> external = force_weight * m * state.gravity;
+          const double         volume   = force_weight * particles.volume[p];
+          add_point<dim>(n,
+                         m,
+                         momentum + external,
+                         volume,
+                         s,
+                         &state.shape_values[p * n],
+                         &state.shape_gradients[p * n],
+                         lumped + base,
+                         consistent ? mass_mat + base * n : nullptr,
+                         rhs + base);
         }
       grid.assemble_mass();
     }
@@ -107,6 +113,11 @@ namespace psmpm
       PhaseTimer::Scope t(timer, "particle to grid");
       auto             &grid = *state.grid;
       grid.zero_cell_rhs();
+      if (state.reconstruction)
+        {
+          state.reconstruction->momentum(state);
+          return;
+        }
       const auto        &particles = state.particles;
       const unsigned int n         = grid.dofs_per_cell;
       Tensor<1, dim>    *rhs       = grid.cell_arrays().rhs.data();

@@ -20,11 +20,13 @@
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/postprocess/tracked_particle.h>
 #include <psmpm/simulator/checkpoint.h>
+#include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
 #include <psmpm/simulator/time_step_control.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -258,6 +260,12 @@ namespace psmpm
       std::string                                  basis_name;
       unsigned int                                 basis_degree = 2;
       std::string                                  transfer_name;
+      /// Transfer/Reconstruction ("particles": none).
+      std::string reconstruction_name = "particles";
+      /// Particles that changed cells on this rank since the run (or its
+      /// resume) started: grid crossings, the source of MPM's
+      /// grid-crossing noise (summary.json "cell_crossings").
+      std::uint64_t cell_crossings = 0;
       /// Whether `automatic` takes partially lumped mass with
       /// closed_transfer (nullptr: the transfer chosen already) named
       /// closed_transfer_name if the mesh turns out closed and filled
@@ -277,9 +285,11 @@ namespace psmpm
         Postprocess::ParticleFormat::vtu;
 
       // Components.
-      Checkpoint                                         checkpoint;
-      std::unique_ptr<TransferScheme<dim>>               transfer;
-      std::unique_ptr<TransferScheme<dim>>               closed_transfer;
+      Checkpoint                           checkpoint;
+      std::unique_ptr<TransferScheme<dim>> transfer;
+      std::unique_ptr<TransferScheme<dim>> closed_transfer;
+      /// Created by parse_parameters(), moved into the state by setup().
+      std::unique_ptr<Reconstruction<dim>>               reconstruction;
       TimeStepControl                                    time_step_control;
       StabilityMonitor                                   monitor;
       std::unique_ptr<Postprocess::Reference<dim>>       reference;

@@ -22,6 +22,9 @@ namespace psmpm
   {
     using namespace dealii;
 
+    template <int dim>
+    class Reconstruction;
+
     /**
      * The discrete state of an MPM run that the components (transfer
      * scheme, time step control, monitors, postprocessors) read and
@@ -45,10 +48,13 @@ namespace psmpm
       std::unique_ptr<Basis::Space<dim>>       space;
       Mesh::CellLocator<dim>                   locator;
       std::unique_ptr<Solver::GridSystem<dim>> grid;
-      Material::MaterialSet<dim>               materials;
-      Particles::ParticleSet<dim>              particles;
-      Tensor<1, dim>                           gravity;
-      std::vector<unsigned int>                cell_owner; ///< MPI rank
+      /// How particle data reach the grid integrals; nullptr: the
+      /// particles themselves (Transfer/Reconstruction = particles).
+      std::unique_ptr<Reconstruction<dim>> reconstruction;
+      Material::MaterialSet<dim>           materials;
+      Particles::ParticleSet<dim>          particles;
+      Tensor<1, dim>                       gravity;
+      std::vector<unsigned int>            cell_owner; ///< MPI rank
       /// Basis at the particles, dofs_per_cell per particle.
       std::vector<double>         shape_values;
       std::vector<Tensor<1, dim>> shape_gradients;

@@ -4,6 +4,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
 namespace psmpm
@@ -43,6 +44,16 @@ namespace psmpm
         static void
         update_particle_velocities(State<dim> &state, PhaseTimer &timer)
         {
+          if (state.reconstruction)
+            {
+              // The momentum goes to the grid by the reconstruction's fit.
+              {
+                PhaseTimer::Scope t(timer, "grid to particle");
+                accelerate_particles(state);
+              }
+              TransferScheme<dim>::momentum_to_grid(state, timer);
+              return;
+            }
           PhaseTimer::Scope t(timer, "grid to particle");
           auto             &grid = *state.grid;
           grid.zero_cell_rhs();
@@ -62,6 +73,24 @@ namespace psmpm
                 particles.mass[p] * particles.velocity[p];
               for (unsigned int k = 0; k < n; ++k)
                 rhs[base + k] += phi[k] * momentum;
+            }
+        }
+
+        /// v_p += dt sum_i a_i N_i(x_p) alone.
+        static void
+        accelerate_particles(State<dim> &state)
+        {
+          auto               &particles = state.particles;
+          const unsigned int  n         = state.grid->dofs_per_cell;
+          const unsigned int *dofs      = state.grid->cell_dofs().data();
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int base = particles.cell[p] * n;
+              const double      *phi  = &state.shape_values[p * n];
+              Tensor<1, dim>     a;
+              for (unsigned int k = 0; k < n; ++k)
+                a += phi[k] * state.grid_acceleration[dofs[base + k]];
+              particles.velocity[p] += state.dt * a;
             }
         }
 

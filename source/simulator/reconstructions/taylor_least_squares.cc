@@ -1,0 +1,671 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/quadrature_lib.h>
+
+#include <psmpm/simulator/point_accumulation.h>
+#include <psmpm/simulator/reconstruction.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    namespace
+    {
+      /**
+       * Taylor least squares (TLS) reconstruction, Wobbes et al. 2019
+       * (book chapter) section 4.4: in every interior cell, density,
+       * momentum density and stress are fitted by least squares to the
+       * cell's particle data in a quadratic Taylor basis whose functions
+       * but the first have mean zero over the cell (eq. 4.32) and are
+       * integrated by Gauss quadrature:
+       *
+       *   M_ij = sum_g rho~(x_g) w_g phi_i phi_j,
+       *   p_i  = sum_g (rho v)~(x_g) w_g phi_i,
+       *   f_i  = sum_g (rho~(x_g) g phi_i - sigma~(x_g) grad phi_i) w_g.
+       *
+       * 1D (eq. 4.31): 1, xi, xi^2 / 2 - 1/6 with xi = (x - x_c) / (h / 2),
+       * Gauss rule of degree + 2 points (exact for rho~ phi_i phi_j,
+       * degree 2 + 2 p). 2D (the follow-up paper of the thesis): 1,
+       * l1 - 1/3, l2 - 1/3, l0^2 - 1/6, l1^2 - 1/6, l2^2 - 1/6 in the
+       * barycentric coordinates of the triangle, with the space's own cell
+       * rule (Powell-Sabin: 7 points on each of the six sub-triangles).
+       *
+       * The constant coefficient of density and momentum is fixed to the
+       * cell's particle mass and momentum over its measure (eqs. 4.35,
+       * 4.39, 4.40), the rest fitted to the remainder: with a rule exact
+       * for the Taylor basis, grid mass and momentum equal the
+       * particles'. The stress is fitted with all coefficients (eq. 4.36).
+       *
+       * Interior cells only: a cell takes the fit if it and every cell
+       * that shares a vertex with it hold particles. A cell at a free
+       * surface of the material is partly empty, and the fit would spread
+       * its mass over the whole cell; its particles stay the quadrature
+       * points there (the issue's "particles elsewhere"). A cell whose
+       * particles cannot determine the quadratic fit (fewer particles than
+       * functions, or normal equations that lose their rank) is fitted
+       * linearly, or with the constant alone: conservation does not
+       * depend on it.
+       *
+       * Memory: the rule, the space's values and gradients at its points
+       * are kept for every owned cell (Powell-Sabin: 42 x 12 x 3 doubles,
+       * 12 kB per cell): meant for the chapter's and the thesis' scenes.
+       */
+      template <int dim>
+      class TaylorLeastSquares : public Reconstruction<dim>
+      {
+      public:
+        explicit TaylorLeastSquares(ParameterHandler &prm)
+        {
+          prm.enter_subsection("Taylor least squares");
+          fit_momentum = prm.get("Fields") == "stress and momentum";
+          prm.leave_subsection();
+        }
+
+        static void
+        declare_parameters(ParameterHandler &prm)
+        {
+          prm.enter_subsection("Taylor least squares");
+          prm.declare_entry(
+            "Fields",
+            "stress",
+            Patterns::Selection("stress|stress and momentum"),
+            "stress: the internal force from the fitted stress (eqs. "
+            "4.36-4.38), mass and momentum mapped by the particles; stress "
+            "and momentum: also the velocity mapping of MUSL/USL from "
+            "density and momentum fitted under the cells' mass and momentum "
+            "(eqs. 4.39-4.44, the chapter's TLS), which puts each cell's "
+            "particle momentum at the cell's centroid: first-order wrong "
+            "where the particles' centroid is not the cell's (a particle "
+            "that just crossed in; lattice particles in triangles), "
+            "measured in doc/chapter.md.");
+          prm.leave_subsection();
+        }
+
+        void
+        initialize(const State<dim> &state) override;
+
+        std::vector<std::string>
+        verified_mass_matrices() const override
+        {
+          return {"lumped", "consistent"};
+        }
+
+        std::vector<std::string>
+        verified_transfers() const override
+        {
+          return {"musl", "usl"};
+        }
+
+        void
+        mass_and_forces(State<dim>  &state,
+                        const double momentum_weight,
+                        const double force_weight) override;
+
+        void
+        momentum(State<dim> &state) override;
+
+      private:
+        /// Taylor functions without the constant, linear ones first, are
+        /// stored first; the constant is stored last, so that the leading
+        /// block of the normal equations is that of the constrained fits
+        /// and one Cholesky factorization serves both kinds of fit.
+        static constexpr unsigned int n_linear    = dim;
+        static constexpr unsigned int n_quadratic = dim == 1 ? 1 : 3;
+        static constexpr unsigned int n_free      = n_linear + n_quadratic;
+        static constexpr unsigned int n_max       = n_free + 1;
+
+        /// The fit of one cell: Cholesky factor L of the normal equations
+        /// D = sum_p psi psi^T over the first n_used free functions and the
+        /// constant (row n_used), and the particle sums that the fits
+        /// need.
+        struct Fit
+        {
+          unsigned int n_used = 0;
+          double       L[n_max][n_max];
+          double       psi_sum[n_max]; ///< sum_p psi_i(x_p)
+        };
+
+        void
+        taylor_basis(const unsigned int cell,
+                     const Point<dim>  &x,
+                     double            *psi) const;
+
+        void
+        sort_particles(const State<dim> &state);
+
+        /// Normal equations of the particles of @p cell, factorized with
+        /// as many free functions as they determine.
+        void
+        factorize(const State<dim> &state, const unsigned int cell, Fit &fit);
+
+        /// Coefficients of the free functions of a fit whose constant is
+        /// given: L' L'^T a = b - c psi_sum over the free block.
+        template <typename T>
+        static void
+        solve_constrained(const Fit &fit, T *b, const T &constant);
+
+        /// All coefficients (constant last) of an unconstrained fit.
+        template <typename T>
+        static void
+        solve_full(const Fit &fit, T *b);
+
+        /// Which cells take the fit this step (see the class comment).
+        void
+        mark_interior_cells(const State<dim> &state);
+
+        /// Per active cell: the affine map to the reference coordinates
+        /// of the Taylor basis, xi = A (x - origin) (1D: xi in [-1, 1];
+        /// 2D: the barycentric coordinates l1, l2), and the measure.
+        std::vector<Point<dim>>     origin;
+        std::vector<Tensor<2, dim>> to_reference;
+        std::vector<double>         measure;
+
+        /// Rule per owned cell: n_q points (the same number on every
+        /// cell), their weights, the Taylor functions (n_q x n_max) and
+        /// the space's values and gradients (n_q x dofs_per_cell).
+        unsigned int                n_q = 0, n_dofs = 0;
+        std::vector<double>         weights;
+        std::vector<double>         q_psi;
+        std::vector<double>         q_values;
+        std::vector<Tensor<1, dim>> q_gradients;
+
+        /// The cells that share a vertex with each cell:
+        /// neighbors[neighbor_start[c] .. neighbor_start[c + 1]).
+        std::vector<unsigned int> neighbor_start, neighbors;
+        /// Per cell this step: holds particles (on any rank), takes the
+        /// fit.
+        std::vector<unsigned int> occupied;
+        std::vector<bool>         interior;
+
+        /// Fields = stress and momentum.
+        bool fit_momentum = false;
+
+        /// Particles by cell: order[offsets[c] .. offsets[c + 1]).
+        std::vector<unsigned int> offsets, order;
+        /// Taylor functions at the particles of the cell being fitted.
+        std::vector<double> scratch_psi;
+      };
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::initialize(const State<dim> &state)
+      {
+        const auto        &tria    = state.triangulation;
+        const unsigned int n_cells = tria.n_active_cells();
+        n_dofs                     = state.space->dofs_per_cell();
+        origin.assign(n_cells, Point<dim>());
+        to_reference.assign(n_cells, Tensor<2, dim>());
+        measure.assign(n_cells, 0.);
+
+        // Cells around each vertex, then around each cell.
+        std::vector<std::vector<unsigned int>> at_vertex(tria.n_vertices());
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            at_vertex[cell->vertex_index(v)].push_back(
+              cell->active_cell_index());
+        neighbor_start.assign(1, 0);
+        neighbors.clear();
+        std::vector<unsigned int> around;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            around.clear();
+            for (const unsigned int v : cell->vertex_indices())
+              for (const unsigned int c : at_vertex[cell->vertex_index(v)])
+                if (c != cell->active_cell_index())
+                  around.push_back(c);
+            std::sort(around.begin(), around.end());
+            around.erase(std::unique(around.begin(), around.end()),
+                         around.end());
+            neighbors.insert(neighbors.end(), around.begin(), around.end());
+            neighbor_start.push_back(neighbors.size());
+          }
+
+        Quadrature<dim>           rule;
+        std::vector<unsigned int> cells;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            if (!cell->is_locally_owned())
+              continue;
+            const unsigned int c = cell->active_cell_index();
+            measure[c]           = cell->measure();
+            Tensor<2, dim> jacobian;
+            if (dim == 1)
+              {
+                // xi = (x - centre) / (h / 2).
+                origin[c]      = cell->center();
+                jacobian[0][0] = (cell->vertex(1)[0] - cell->vertex(0)[0]) / 2;
+                const QGauss<dim>       gauss(state.space->degree() + 2);
+                std::vector<Point<dim>> points(gauss.size());
+                std::vector<double>     w(gauss.size());
+                for (unsigned int q = 0; q < gauss.size(); ++q)
+                  {
+                    points[q] =
+                      cell->vertex(0) +
+                      (cell->vertex(1) - cell->vertex(0)) * gauss.point(q)[0];
+                    w[q] = measure[c] * gauss.weight(q);
+                  }
+                rule = Quadrature<dim>(points, w);
+              }
+            else
+              {
+                // (l1, l2) = J^-1 (x - v0), J = [v1 - v0, v2 - v0].
+                origin[c] = cell->vertex(0);
+                for (unsigned int d = 0; d < dim; ++d)
+                  for (unsigned int e = 0; e < dim; ++e)
+                    jacobian[e][d] =
+                      cell->vertex(d + 1)[e] - cell->vertex(0)[e];
+                rule = state.space->cell_quadrature(state.dof_handler, c);
+              }
+            to_reference[c] = invert(jacobian);
+            if (n_q == 0)
+              {
+                n_q = rule.size();
+                weights.assign(n_cells * n_q, 0.);
+                q_psi.assign(n_cells * n_q * n_max, 0.);
+                q_values.assign(n_cells * n_q * n_dofs, 0.);
+                q_gradients.assign(n_cells * n_q * n_dofs, Tensor<1, dim>());
+              }
+            AssertThrow(rule.size() == n_q,
+                        ExcMessage("TaylorLeastSquares: the cell rules of the "
+                                   "space differ in size."));
+            cells.assign(n_q, c);
+            state.space->evaluate(n_q,
+                                  cells.data(),
+                                  rule.get_points().data(),
+                                  &q_values[c * n_q * n_dofs],
+                                  &q_gradients[c * n_q * n_dofs]);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                weights[c * n_q + q] = rule.weight(q);
+                taylor_basis(c, rule.point(q), &q_psi[(c * n_q + q) * n_max]);
+              }
+          }
+        offsets.resize(n_cells + 1);
+        occupied.resize(n_cells);
+        interior.resize(n_cells);
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::taylor_basis(const unsigned int cell,
+                                            const Point<dim>  &x,
+                                            double            *psi) const
+      {
+        const Tensor<1, dim> xi = to_reference[cell] * (x - origin[cell]);
+        if (dim == 1)
+          {
+            psi[0] = xi[0];
+            psi[1] = xi[0] * xi[0] / 2 - 1. / 6;
+          }
+        else
+          {
+            const double l1 = xi[0], l2 = xi[dim - 1], l0 = 1 - l1 - l2;
+            psi[0] = l1 - 1. / 3;
+            psi[1] = l2 - 1. / 3;
+            psi[2] = l0 * l0 - 1. / 6;
+            psi[3] = l1 * l1 - 1. / 6;
+            psi[4] = l2 * l2 - 1. / 6;
+          }
+        psi[n_max - 1] = 1;
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::mark_interior_cells(const State<dim> &state)
+      {
+        const unsigned int n_cells = occupied.size();
+        for (unsigned int c = 0; c < n_cells; ++c)
+          occupied[c] = offsets[c + 1] > offsets[c];
+        // Neighbours may be other ranks' cells: every rank needs every
+        // cell's flag (one reduction of n_cells integers a step).
+        if (Utilities::MPI::n_mpi_processes(state.comm) > 1)
+          Utilities::MPI::max(occupied, state.comm, occupied);
+        for (unsigned int c = 0; c < n_cells; ++c)
+          {
+            bool all = occupied[c] != 0;
+            for (unsigned int i = neighbor_start[c];
+                 all && i < neighbor_start[c + 1];
+                 ++i)
+              all = occupied[neighbors[i]] != 0;
+            interior[c] = all;
+          }
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::sort_particles(const State<dim> &state)
+      {
+        // Counting sort by cell: O(particles + cells), no allocation once
+        // the arrays have grown.
+        const auto &cell_of = state.particles.cell;
+        std::fill(offsets.begin(), offsets.end(), 0u);
+        for (const unsigned int c : cell_of)
+          ++offsets[c + 1];
+        for (unsigned int c = 0; c + 1 < offsets.size(); ++c)
+          offsets[c + 1] += offsets[c];
+        order.resize(cell_of.size());
+        for (unsigned int p = 0; p < cell_of.size(); ++p)
+          order[offsets[cell_of[p]]++] = p;
+        // offsets[c] now ends cell c: shift back.
+        for (unsigned int c = offsets.size() - 1; c > 0; --c)
+          offsets[c] = offsets[c - 1];
+        offsets[0] = 0;
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::factorize(const State<dim>  &state,
+                                         const unsigned int cell,
+                                         Fit               &fit)
+      {
+        const unsigned int begin = offsets[cell],
+                           n_p   = offsets[cell + 1] - begin;
+        scratch_psi.resize(n_p * n_max);
+        double D[n_max][n_max] = {};
+        for (unsigned int i = 0; i < n_p; ++i)
+          {
+            double *psi = &scratch_psi[i * n_max];
+            taylor_basis(cell, state.particles.position[order[begin + i]], psi);
+            for (unsigned int r = 0; r < n_max; ++r)
+              for (unsigned int s = 0; s <= r; ++s)
+                D[r][s] += psi[r] * psi[s];
+          }
+        for (unsigned int r = 0; r < n_max; ++r)
+          fit.psi_sum[r] = D[n_max - 1][r];
+
+        // As many free functions as the particles determine: the
+        // unconstrained (stress) fit needs n_used + 1 particles.
+        unsigned int n_used = n_p >= n_max        ? n_free :
+                              n_p >= n_linear + 1 ? n_linear :
+                                                    0;
+        // Cholesky of the leading block; a pivot that has lost all but
+        // 1e-10 of its diagonal means the particles do not see that
+        // function: drop it and what follows it.
+        const auto factor_row = [&](const unsigned int r,
+                                    const unsigned int source,
+                                    const unsigned int n_before) {
+          for (unsigned int s = 0; s < n_before; ++s)
+            {
+              double v = (source >= s ? D[source][s] : D[s][source]);
+              for (unsigned int t = 0; t < s; ++t)
+                v -= fit.L[r][t] * fit.L[s][t];
+              fit.L[r][s] = v / fit.L[s][s];
+            }
+          double pivot = D[source][source];
+          for (unsigned int t = 0; t < n_before; ++t)
+            pivot -= fit.L[r][t] * fit.L[r][t];
+          const bool ok      = pivot > 1e-10 * D[source][source];
+          fit.L[r][n_before] = ok ? std::sqrt(pivot) : 0.;
+          return ok;
+        };
+        for (unsigned int r = 0; r < n_used; ++r)
+          if (!factor_row(r, r, r))
+            {
+              // Keep complete polynomial degrees only.
+              n_used = r < n_linear ? 0 : n_linear;
+              break;
+            }
+        // The constant row: its pivot is n_p minus the part the free
+        // functions explain, positive for any n_p >= 1 unless the free
+        // functions are constant on the particles (then drop them).
+        while (!factor_row(n_used, n_max - 1, n_used))
+          n_used = 0;
+        fit.n_used = n_used;
+        // The constant's sums in the positions the factor uses.
+        fit.psi_sum[n_used] = fit.psi_sum[n_max - 1];
+      }
+
+
+      template <int dim>
+      template <typename T>
+      void
+      TaylorLeastSquares<dim>::solve_constrained(const Fit &fit,
+                                                 T         *b,
+                                                 const T   &constant)
+      {
+        const unsigned int n = fit.n_used;
+        for (unsigned int r = 0; r < n; ++r)
+          b[r] -= constant * fit.psi_sum[r];
+        for (unsigned int r = 0; r < n; ++r)
+          {
+            for (unsigned int s = 0; s < r; ++s)
+              b[r] -= fit.L[r][s] * b[s];
+            b[r] /= fit.L[r][r];
+          }
+        for (unsigned int r = n; r-- > 0;)
+          {
+            for (unsigned int s = r + 1; s < n; ++s)
+              b[r] -= fit.L[s][r] * b[s];
+            b[r] /= fit.L[r][r];
+          }
+      }
+
+
+      template <int dim>
+      template <typename T>
+      void
+      TaylorLeastSquares<dim>::solve_full(const Fit &fit, T *b)
+      {
+        const unsigned int n = fit.n_used + 1;
+        for (unsigned int r = 0; r < n; ++r)
+          {
+            for (unsigned int s = 0; s < r; ++s)
+              b[r] -= fit.L[r][s] * b[s];
+            b[r] /= fit.L[r][r];
+          }
+        for (unsigned int r = n; r-- > 0;)
+          {
+            for (unsigned int s = r + 1; s < n; ++s)
+              b[r] -= fit.L[s][r] * b[s];
+            b[r] /= fit.L[r][r];
+          }
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::mass_and_forces(State<dim>  &state,
+                                               const double momentum_weight,
+                                               const double force_weight)
+      {
+        sort_particles(state);
+        mark_interior_cells(state);
+        const auto        &particles  = state.particles;
+        auto              &cells      = state.grid->cell_arrays();
+        const bool         consistent = !cells.mass.empty();
+        const unsigned int n          = n_dofs;
+        Fit                fit;
+        for (unsigned int c = 0; c + 1 < offsets.size(); ++c)
+          {
+            const unsigned int begin = offsets[c], end = offsets[c + 1];
+            if (begin == end)
+              continue;
+            const unsigned int base = c * n;
+            double *const mass = consistent ? &cells.mass[base * n] : nullptr;
+            // Mass (eq. 4.5), external force and momentum from the
+            // particles; their stress only where the cell is not fitted.
+            const bool fitted = interior[c];
+            for (unsigned int i = begin; i < end; ++i)
+              {
+                const unsigned int   p = order[i];
+                const double         m = particles.mass[p];
+                const Tensor<1, dim> momentum =
+                  momentum_weight != 0 ?
+                    momentum_weight * m * particles.velocity[p] :
+                    Tensor<1, dim>();
+                add_point<dim>(n,
+                               m,
+                               momentum + force_weight * m * state.gravity,
+                               fitted ? 0. : force_weight * particles.volume[p],
+                               particles.stress[p],
+                               &state.shape_values[p * n],
+                               &state.shape_gradients[p * n],
+                               &cells.lumped[base],
+                               mass,
+                               &cells.rhs[base]);
+              }
+            if (!fitted || force_weight == 0)
+              continue;
+            // Internal force of the fitted stress (eqs. 4.36-4.38).
+            factorize(state, c, fit);
+            const unsigned int      k            = fit.n_used;
+            SymmetricTensor<2, dim> sigma[n_max] = {};
+            for (unsigned int i = begin; i < end; ++i)
+              {
+                const double *psi = &scratch_psi[(i - begin) * n_max];
+                const auto   &s   = particles.stress[order[i]];
+                for (unsigned int r = 0; r < k; ++r)
+                  sigma[r] += psi[r] * s;
+                sigma[k] += s;
+              }
+            solve_full(fit, sigma);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const unsigned int      g   = c * n_q + q;
+                const double           *psi = &q_psi[g * n_max];
+                SymmetricTensor<2, dim> s   = sigma[k];
+                for (unsigned int r = 0; r < k; ++r)
+                  s += sigma[r] * psi[r];
+                const SymmetricTensor<2, dim> sw =
+                  force_weight * weights[g] * s;
+                const Tensor<1, dim> *grad = &q_gradients[g * n];
+                for (unsigned int a = 0; a < n; ++a)
+                  cells.rhs[base + a] -= sw * grad[a];
+              }
+          }
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::momentum(State<dim> &state)
+      {
+        // The particles have not moved since mass_and_forces(): the cells'
+        // particle lists and interior flags are still those of the step.
+        if (!fit_momentum)
+          {
+            const auto        &particles = state.particles;
+            Tensor<1, dim>    *rhs       = state.grid->cell_arrays().rhs.data();
+            const unsigned int n         = n_dofs;
+            for (std::size_t p = 0; p < particles.size(); ++p)
+              {
+                const unsigned int   base = particles.cell[p] * n;
+                const double        *phi  = &state.shape_values[p * n];
+                const Tensor<1, dim> momentum =
+                  particles.mass[p] * particles.velocity[p];
+                for (unsigned int a = 0; a < n; ++a)
+                  rhs[base + a] += phi[a] * momentum;
+              }
+            return;
+          }
+        // The mass matrix of the velocity (eqs. 4.42-4.44) replaces that
+        // of the acceleration.
+        auto &grid = *state.grid;
+        grid.zero_cell_mass();
+        const auto        &particles  = state.particles;
+        auto              &cells      = grid.cell_arrays();
+        const bool         consistent = !cells.mass.empty();
+        const unsigned int n          = n_dofs;
+        Fit                fit;
+        for (unsigned int c = 0; c + 1 < offsets.size(); ++c)
+          {
+            const unsigned int begin = offsets[c], end = offsets[c + 1];
+            if (begin == end)
+              continue;
+            const unsigned int base = c * n;
+            double *const mass = consistent ? &cells.mass[base * n] : nullptr;
+            if (!interior[c])
+              {
+                for (unsigned int i = begin; i < end; ++i)
+                  {
+                    const unsigned int p = order[i];
+                    const double       m = particles.mass[p];
+                    add_point<dim>(n,
+                                   m,
+                                   m * particles.velocity[p],
+                                   0.,
+                                   particles.stress[p],
+                                   &state.shape_values[p * n],
+                                   &state.shape_gradients[p * n],
+                                   &cells.lumped[base],
+                                   mass,
+                                   &cells.rhs[base]);
+                  }
+                continue;
+              }
+            factorize(state, c, fit);
+            const unsigned int k            = fit.n_used;
+            double             rho[n_max]   = {};
+            Tensor<1, dim>     rho_v[n_max] = {};
+            double             cell_mass    = 0;
+            Tensor<1, dim>     cell_momentum;
+            for (unsigned int i = begin; i < end; ++i)
+              {
+                const unsigned int   p   = order[i];
+                const double        *psi = &scratch_psi[(i - begin) * n_max];
+                const double         d   = particles.density[p];
+                const Tensor<1, dim> dv  = d * particles.velocity[p];
+                for (unsigned int r = 0; r < k; ++r)
+                  {
+                    rho[r] += psi[r] * d;
+                    rho_v[r] += psi[r] * dv;
+                  }
+                cell_mass += particles.mass[p];
+                cell_momentum += particles.mass[p] * particles.velocity[p];
+              }
+            // Eqs. 4.39-4.40: the cell's mass and momentum fix the
+            // constant coefficients.
+            const double         rho_0   = cell_mass / measure[c];
+            const Tensor<1, dim> rho_v_0 = cell_momentum / measure[c];
+            solve_constrained(fit, rho, rho_0);
+            solve_constrained(fit, rho_v, rho_v_0);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const unsigned int g   = c * n_q + q;
+                const double      *psi = &q_psi[g * n_max];
+                double             d   = rho_0;
+                Tensor<1, dim>     dv  = rho_v_0;
+                for (unsigned int r = 0; r < k; ++r)
+                  {
+                    d += rho[r] * psi[r];
+                    dv += rho_v[r] * psi[r];
+                  }
+                const double w = weights[g];
+                add_point<dim>(n,
+                               d * w,
+                               w * dv,
+                               0.,
+                               SymmetricTensor<2, dim>(),
+                               &q_values[g * n],
+                               &q_gradients[g * n],
+                               &cells.lumped[base],
+                               mass,
+                               &cells.rhs[base]);
+              }
+          }
+        grid.assemble_mass();
+      }
+    } // namespace
+
+    RegisterForDims<ReconstructionRegistry, TaylorLeastSquares>
+      register_taylor_least_squares(
+        "taylor least squares",
+        "per cell, least squares fits of stress (and of density and "
+        "momentum) in the quadratic Taylor basis, integrated by Gauss "
+        "quadrature, in every cell whose vertex neighbours all hold "
+        "particles (particles elsewhere); mass and momentum of each cell "
+        "kept exactly (Wobbes et al. 2019, section 4.4)",
+        [](ParameterHandler &prm) {
+          TaylorLeastSquares<2>::declare_parameters(prm);
+        });
+  } // namespace Simulator
+} // namespace psmpm
