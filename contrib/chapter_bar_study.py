@@ -52,6 +52,17 @@ BEGIN = "<!-- chapter_bar_study table begin -->"
 END = "<!-- chapter_bar_study table end -->"
 DEGREE_BEGIN = "<!-- chapter_bar_study degree table begin -->"
 DEGREE_END = "<!-- chapter_bar_study degree table end -->"
+TLS_BEGIN = "<!-- chapter_bar_study tls table begin -->"
+TLS_END = "<!-- chapter_bar_study tls table end -->"
+# Taylor least squares (--tls): the chapter's fields and the stress alone.
+TLS = "Transfer/Reconstruction=taylor least squares"
+TLS_CASES = [
+    ("TLS-BSMPM lumped (chapter)", "bspline", "lumped",
+     [TLS, "Transfer/Taylor least squares/Fields=stress and momentum"]),
+    ("TLS-BSMPM consistent (chapter)", "bspline", "consistent",
+     [TLS, "Transfer/Taylor least squares/Fields=stress and momentum"]),
+    ("TLS-BSMPM consistent, stress", "bspline", "consistent",
+     [TLS, "Transfer/Taylor least squares/Fields=stress"])]
 
 
 def masses(degree):
@@ -59,16 +70,18 @@ def masses(degree):
     return ("lumped", "consistent") if degree <= 2 else ("consistent",)
 
 
-def run(psmpm, basis, elements, mass, directory, degree=2):
+def run(psmpm, basis, elements, mass, directory, degree=2, extra=()):
     """One run; returns (errors dict, cpu seconds, wall seconds)."""
-    out = os.path.join(directory, "%s-%d-%s-%d" % (basis, degree, mass,
-                                                   elements))
+    out = os.path.join(directory, "%s-%d-%s-%d-%d" % (basis, degree, mass,
+                                                      elements, len(extra)))
     command = [psmpm, os.path.join(ROOT, "prm", "chapter_bar_1d.prm"),
                "--set", "Basis/Type=" + basis,
                "--set", "Basis/Degree=%d" % degree,
                "--set", "Mesh/Blocks x=%d" % elements,
                "--set", "Mass matrix/Type=" + mass,
                "--set", "Output directory=" + out]
+    for e in extra:
+        command += ["--set", e]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     result = subprocess.run(command, stdout=subprocess.PIPE,
@@ -248,6 +261,8 @@ def main():
                         help="print the table only")
     parser.add_argument("--stability", action="store_true",
                         help="bisect the stable time step instead")
+    parser.add_argument("--tls", action="store_true",
+                        help="Taylor least squares (TLS-BSMPM) instead")
     parser.add_argument("--degree", type=int, nargs="+",
                         help="Basis/Degree of BSMPM (default: the "
                         "quadratic study with MPM)")
@@ -257,18 +272,23 @@ def main():
             eigenvalue_bound(p)
         stability(args.psmpm, args.degree)
         return
-    if args.degree:
-        cases = [("BSMPM p=%d %s" % (p, mass), "bspline", mass, p)
+    if args.tls:
+        cases = [(name, basis, mass, 2, extra)
+                 for name, basis, mass, extra in TLS_CASES]
+        begin_marker, end_marker = TLS_BEGIN, TLS_END
+    elif args.degree:
+        cases = [("BSMPM p=%d %s" % (p, mass), "bspline", mass, p, ())
                  for p in args.degree for mass in masses(p)]
         begin_marker, end_marker = DEGREE_BEGIN, DEGREE_END
     else:
-        cases = [(name, basis, mass, 2) for name, basis, mass in CONVERGENCE]
+        cases = [(name, basis, mass, 2, ())
+                 for name, basis, mass in CONVERGENCE]
         begin_marker, end_marker = BEGIN, END
     results = {}
     with tempfile.TemporaryDirectory() as directory:
-        for name, basis, mass, degree in cases:
+        for name, basis, mass, degree, extra in cases:
             results[name] = [run(args.psmpm, basis, n, mass, directory,
-                                 degree)
+                                 degree, extra)
                              for n in ELEMENTS]
     text = table(results, [case[0] for case in cases])
     print(text)
@@ -282,7 +302,7 @@ def main():
                content[end:])
     with open(doc, "w") as f:
         f.write(content)
-    if not args.degree:
+    if not args.degree and not args.tls:
         plot(results, os.path.join(ROOT, "doc", "images",
                                    "chapter_bar_convergence.png"))
 
