@@ -330,6 +330,11 @@ namespace psmpm
       state.dof_handler.reinit(state.triangulation);
       state.dof_handler.distribute_dofs(state.space->dof_layout());
       state.space->reinit(state.dof_handler);
+      {
+        AffineConstraints<double> ties;
+        state.space->make_space_constraints(state.dof_handler, ties);
+        n_functions = state.dof_handler.n_dofs() - ties.n_constraints();
+      }
 
       const char *fixed_entries[] = {"x", "y"};
       std::array<std::set<types::boundary_id>, dim> fixed;
@@ -779,7 +784,7 @@ namespace psmpm
       if (!time_step_control.warning().empty())
         pcout << "psmpm: warning: " << time_step_control.warning() << std::endl;
       pcout << "psmpm: " << state.space->name() << " basis, "
-            << state.dof_handler.n_dofs() << " DoFs, "
+            << n_functions << " DoFs, "
             << Utilities::MPI::sum(state.particles.size(), comm)
             << " particles, dt = " << time_step_control.get_time_step()
             << ", end time = " << time_step_control.get_end_time() << std::endl;
@@ -1089,7 +1094,7 @@ namespace psmpm
           summary.set("warning", warning);
       }
       summary.set_integer("dimension", dim);
-      summary.set_integer("n_dofs", state.dof_handler.n_dofs());
+      summary.set_integer("n_dofs", n_functions);
       summary.set_integer("n_cells", state.triangulation.n_active_cells());
       summary.set_integer("n_particles",
                           Utilities::MPI::sum(state.particles.size(), comm));

@@ -226,7 +226,7 @@ namespace psmpm
       unsigned int
       get_n_dofs() const
       {
-        return state.dof_handler.n_dofs();
+        return n_functions;
       }
 
     private:
@@ -260,6 +260,9 @@ namespace psmpm
       std::string                                  basis_name;
       unsigned int                                 basis_degree = 2;
       std::string                                  transfer_name;
+      /// Basis functions: the layout's DoFs minus those the space ties
+      /// to others (bspline: 2n + 1 Bezier DoFs carry n + 2 B-splines).
+      types::global_dof_index n_functions = 0;
       /// Transfer/Reconstruction ("particles": none).
       std::string reconstruction_name = "particles";
       /// Particles that changed cells on this rank since the run (or its
