@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -35,7 +36,8 @@ configure(psmpm::Simulator::Simulator<2> &solver,
 
 /// A solver set up from the scene file prm/@p scene of the repository with
 /// the given overrides ("Subsection/Entry=value"), quiet.
-inline std::unique_ptr<psmpm::Simulator::Simulator<2>>
+template <int dim = 2>
+std::unique_ptr<psmpm::Simulator::Simulator<dim>>
 make_scene_solver(const std::string              &scene,
                   const std::vector<std::string> &overrides)
 {
@@ -45,7 +47,7 @@ make_scene_solver(const std::string              &scene,
   for (const auto &o : overrides)
     psmpm::App::apply_override(prm, o);
   auto solver =
-    std::make_unique<psmpm::Simulator::Simulator<2>>(MPI_COMM_WORLD);
+    std::make_unique<psmpm::Simulator::Simulator<dim>>(MPI_COMM_WORLD);
   solver->quiet = true;
   solver->parse_parameters(prm);
   solver->setup();
@@ -111,5 +113,21 @@ struct StatisticsTable
   std::vector<std::string>         names;
   std::vector<std::vector<double>> rows;
 };
+
+/// Observed rates log2(e_i / e_(i+1)) between successive meshes of the
+/// four values @p e, printed after @p what.
+inline std::vector<double>
+rates(std::ostream &out, const std::string &what, const double (&e)[4])
+{
+  std::vector<double> r;
+  out << what << ": rates";
+  for (unsigned int i = 0; i + 1 < 4; ++i)
+    {
+      r.push_back(std::log2(e[i] / e[i + 1]));
+      out << ' ' << std::fixed << std::setprecision(1) << r.back();
+    }
+  out << std::endl;
+  return r;
+}
 
 #endif

@@ -113,7 +113,7 @@ namespace psmpm
       PhaseTimer::Scope t(timer, "particle to grid");
       auto             &grid = *state.grid;
       grid.zero_cell_rhs();
-      if (state.reconstruction)
+      if (state.reconstruction && state.reconstruction->fits_momentum())
         {
           state.reconstruction->momentum(state);
           return;

@@ -26,7 +26,7 @@
 #include <psmpm/app/application.h>
 #include <psmpm/simulator/simulator.h>
 
-#include "../tests.h"
+#include "../mpm_tests.h"
 
 #include <algorithm>
 
@@ -95,20 +95,6 @@ namespace
     return {dm, dp};
   }
 
-  /// Observed rates between successive meshes of the values @p e.
-  std::vector<double>
-  rates(std::ofstream &out, const std::string &what, const double (&e)[4])
-  {
-    std::vector<double> r;
-    out << what << ": rates";
-    for (unsigned int i = 0; i + 1 < 4; ++i)
-      {
-        r.push_back(std::log2(e[i] / e[i + 1]));
-        out << ' ' << std::fixed << std::setprecision(1) << r.back();
-      }
-    out << std::endl;
-    return r;
-  }
 } // namespace
 
 int

@@ -26,27 +26,12 @@
 #include <psmpm/app/application.h>
 #include <psmpm/simulator/simulator.h>
 
-#include "../tests.h"
+#include "../mpm_tests.h"
 
 namespace
 {
   using Overrides = std::vector<std::string>;
 
-  std::unique_ptr<psmpm::Simulator::Simulator<1>>
-  make_solver(const std::string &scene, const Overrides &overrides)
-  {
-    ParameterHandler prm;
-    psmpm::App::declare_parameters(prm);
-    prm.parse_input(std::string(PSMPM_SOURCE_DIR) + "/prm/" + scene);
-    for (const auto &o : overrides)
-      psmpm::App::apply_override(prm, o);
-    auto solver =
-      std::make_unique<psmpm::Simulator::Simulator<1>>(MPI_COMM_WORLD);
-    solver->quiet = true;
-    solver->parse_parameters(prm);
-    solver->setup();
-    return solver;
-  }
 
   Overrides
   method(const std::string &basis,
@@ -65,7 +50,7 @@ namespace
   {
     auto o = m;
     o.push_back("Mesh/Blocks x=" + std::to_string(elements));
-    auto solver = make_solver("chapter_bar_1d.prm", o);
+    auto solver = make_scene_solver<1>("chapter_bar_1d.prm", o);
     for (unsigned int step = 0; step < 19; ++step)
       solver->do_time_step(1e-7);
     return solver->compute_errors();
@@ -76,7 +61,7 @@ namespace
   std::pair<double, double>
   mapping_conservation(const Overrides &m, const unsigned int steps)
   {
-    auto   solver = make_solver("chapter_bar_1d_large.prm", m);
+    auto   solver = make_scene_solver<1>("chapter_bar_1d_large.prm", m);
     double dm = 0, dp = 0;
     for (unsigned int step = 0; step < steps; ++step)
       {
@@ -106,25 +91,12 @@ namespace
   double
   large_stress_error(const Overrides &m)
   {
-    auto solver = make_solver("chapter_bar_1d_large.prm", m);
+    auto solver = make_scene_solver<1>("chapter_bar_1d_large.prm", m);
     for (unsigned int step = 0; step < 10000; ++step)
       solver->do_time_step(1e-5);
     return solver->compute_errors().stress;
   }
 
-  std::vector<double>
-  rates(std::ofstream &out, const std::string &what, const double (&e)[4])
-  {
-    std::vector<double> r;
-    out << what << ": rates";
-    for (unsigned int i = 0; i + 1 < 4; ++i)
-      {
-        r.push_back(std::log2(e[i] / e[i + 1]));
-        out << ' ' << std::fixed << std::setprecision(1) << r.back();
-      }
-    out << std::endl;
-    return r;
-  }
 
   /// Whether setting up the large bar with @p o throws a message that
   /// contains @p entry.

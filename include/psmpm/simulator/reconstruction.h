@@ -64,8 +64,14 @@ namespace psmpm
                       const double momentum_weight,
                       const double force_weight) = 0;
 
+      /// Whether momentum() replaces the particles' mapping of momentum
+      /// (and with it the mass matrix of the velocity).
+      virtual bool
+      fits_momentum() const = 0;
+
       /// The per-cell right-hand sides p_i of the particles' current
-      /// momentum (zeroed by the caller).
+      /// momentum (zeroed by the caller), if fits_momentum(); may assemble
+      /// a mass matrix of its own for the velocity.
       virtual void
       momentum(State<dim> &state) = 0;
     };

@@ -101,6 +101,12 @@ namespace psmpm
           return {"musl", "usl"};
         }
 
+        bool
+        fits_momentum() const override
+        {
+          return fit_momentum;
+        }
+
         void
         mass_and_forces(State<dim>  &state,
                         const double momentum_weight,
@@ -153,6 +159,11 @@ namespace psmpm
         template <typename T>
         static void
         solve_full(const Fit &fit, T *b);
+
+        /// Solve L L^T x = b over the leading @p n rows of the factor.
+        template <typename T>
+        static void
+        cholesky_solve(const Fit &fit, const unsigned int n, T *b);
 
         /// Which cells take the fit this step (see the class comment).
         void
@@ -435,13 +446,10 @@ namespace psmpm
       template <int dim>
       template <typename T>
       void
-      TaylorLeastSquares<dim>::solve_constrained(const Fit &fit,
-                                                 T         *b,
-                                                 const T   &constant)
+      TaylorLeastSquares<dim>::cholesky_solve(const Fit         &fit,
+                                              const unsigned int n,
+                                              T                 *b)
       {
-        const unsigned int n = fit.n_used;
-        for (unsigned int r = 0; r < n; ++r)
-          b[r] -= constant * fit.psi_sum[r];
         for (unsigned int r = 0; r < n; ++r)
           {
             for (unsigned int s = 0; s < r; ++s)
@@ -460,21 +468,22 @@ namespace psmpm
       template <int dim>
       template <typename T>
       void
+      TaylorLeastSquares<dim>::solve_constrained(const Fit &fit,
+                                                 T         *b,
+                                                 const T   &constant)
+      {
+        for (unsigned int r = 0; r < fit.n_used; ++r)
+          b[r] -= constant * fit.psi_sum[r];
+        cholesky_solve(fit, fit.n_used, b);
+      }
+
+
+      template <int dim>
+      template <typename T>
+      void
       TaylorLeastSquares<dim>::solve_full(const Fit &fit, T *b)
       {
-        const unsigned int n = fit.n_used + 1;
-        for (unsigned int r = 0; r < n; ++r)
-          {
-            for (unsigned int s = 0; s < r; ++s)
-              b[r] -= fit.L[r][s] * b[s];
-            b[r] /= fit.L[r][r];
-          }
-        for (unsigned int r = n; r-- > 0;)
-          {
-            for (unsigned int s = r + 1; s < n; ++s)
-              b[r] -= fit.L[s][r] * b[s];
-            b[r] /= fit.L[r][r];
-          }
+        cholesky_solve(fit, fit.n_used + 1, b);
       }
 
 
@@ -558,22 +567,6 @@ namespace psmpm
       {
         // The particles have not moved since mass_and_forces(): the cells'
         // particle lists and interior flags are still those of the step.
-        if (!fit_momentum)
-          {
-            const auto        &particles = state.particles;
-            Tensor<1, dim>    *rhs       = state.grid->cell_arrays().rhs.data();
-            const unsigned int n         = n_dofs;
-            for (std::size_t p = 0; p < particles.size(); ++p)
-              {
-                const unsigned int   base = particles.cell[p] * n;
-                const double        *phi  = &state.shape_values[p * n];
-                const Tensor<1, dim> momentum =
-                  particles.mass[p] * particles.velocity[p];
-                for (unsigned int a = 0; a < n; ++a)
-                  rhs[base + a] += phi[a] * momentum;
-              }
-            return;
-          }
         // The mass matrix of the velocity (eqs. 4.42-4.44) replaces that
         // of the acceleration.
         auto &grid = *state.grid;

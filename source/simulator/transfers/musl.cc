@@ -44,19 +44,26 @@ namespace psmpm
         static void
         update_particle_velocities(State<dim> &state, PhaseTimer &timer)
         {
-          if (state.reconstruction)
-            {
-              // The momentum goes to the grid by the reconstruction's fit.
-              {
-                PhaseTimer::Scope t(timer, "grid to particle");
-                accelerate_particles(state);
-              }
-              TransferScheme<dim>::momentum_to_grid(state, timer);
-              return;
-            }
-          PhaseTimer::Scope t(timer, "grid to particle");
-          auto             &grid = *state.grid;
-          grid.zero_cell_rhs();
+          // A reconstruction that fits the momentum maps it itself.
+          const bool fitted =
+            state.reconstruction && state.reconstruction->fits_momentum();
+          {
+            PhaseTimer::Scope t(timer, "grid to particle");
+            accelerate_particles(state, !fitted);
+          }
+          if (fitted)
+            TransferScheme<dim>::momentum_to_grid(state, timer);
+        }
+
+        /// v_p += dt sum_i a_i N_i(x_p), and, if @p momentum_to_grid, the
+        /// cell right-hand sides of the updated momentum m_p v_p N_i in the
+        /// same pass.
+        static void
+        accelerate_particles(State<dim> &state, const bool momentum_to_grid)
+        {
+          auto &grid = *state.grid;
+          if (momentum_to_grid)
+            grid.zero_cell_rhs();
           auto               &particles = state.particles;
           const unsigned int  n         = grid.dofs_per_cell;
           const unsigned int *dofs      = grid.cell_dofs().data();
@@ -69,28 +76,12 @@ namespace psmpm
               for (unsigned int k = 0; k < n; ++k)
                 a += phi[k] * state.grid_acceleration[dofs[base + k]];
               particles.velocity[p] += state.dt * a;
+              if (!momentum_to_grid)
+                continue;
               const Tensor<1, dim> momentum =
                 particles.mass[p] * particles.velocity[p];
               for (unsigned int k = 0; k < n; ++k)
                 rhs[base + k] += phi[k] * momentum;
-            }
-        }
-
-        /// v_p += dt sum_i a_i N_i(x_p) alone.
-        static void
-        accelerate_particles(State<dim> &state)
-        {
-          auto               &particles = state.particles;
-          const unsigned int  n         = state.grid->dofs_per_cell;
-          const unsigned int *dofs      = state.grid->cell_dofs().data();
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int base = particles.cell[p] * n;
-              const double      *phi  = &state.shape_values[p * n];
-              Tensor<1, dim>     a;
-              for (unsigned int k = 0; k < n; ++k)
-                a += phi[k] * state.grid_acceleration[dofs[base + k]];
-              particles.velocity[p] += state.dt * a;
             }
         }
 
