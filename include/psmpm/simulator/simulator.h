@@ -269,6 +269,8 @@ namespace psmpm
       /// resume) started: grid crossings, the source of MPM's
       /// grid-crossing noise (summary.json "cell_crossings").
       std::uint64_t cell_crossings = 0;
+      /// CPU seconds (user + sys, this rank) of the time loop of run().
+      double cpu_time_loop = 0;
       /// Whether `automatic` takes partially lumped mass with
       /// closed_transfer (nullptr: the transfer chosen already) named
       /// closed_transfer_name if the mesh turns out closed and filled
