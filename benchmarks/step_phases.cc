@@ -183,6 +183,8 @@ namespace
     bm.counters["cells"]         = state.grid->n_cells;
     bm.counters["dofs"]          = state.dof_handler.n_dofs();
     bm.counters["dofs_per_cell"] = state.grid->dofs_per_cell;
+    if (state.grid->uses_matrix())
+      bm.counters["nnz"] = state.grid->mass_matrix(0).n_nonzero_elements();
   }
 
   /// The particle loop of TransferScheme::particles_to_grid with
