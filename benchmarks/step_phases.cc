@@ -4,13 +4,17 @@
 // (doc/performance.md, "Roofline per phase").
 //
 //   step_phases --benchmark_repetitions=3 --benchmark_report_aggregates_only
-//   step_phases --benchmark_filter='p2g|triad'
+//   step_phases --benchmark_filter='^(p2g_accumulate|machine/triad)'
+//
+// Benchmark names are phase/configuration/blocks (p2g_accumulate/
+// ps_consistent/250) and machine/... .
 //
 // Scene: prm/benchmark_throughput.prm (the vibrating bar, criss-cross
-// mesh, 8 x 8 particles per block, linear elastic) with Mesh/Blocks x =
-// the benchmark argument (20 blocks in y: 1280 particles per block
-// column, argument 50 = 64,000 particles) and Transfer/Scheme = musl, in
-// three configurations: P1 lumped, Powell-Sabin lumped and Powell-Sabin
+// mesh, 8 x 8 particles per block, hypoelastic) with Mesh/Blocks x = the
+// benchmark argument (20 blocks in y: 1280 particles per block column;
+// 50 = 64,000 particles, 250 = the 320,000 of the throughput table in
+// doc/performance.md) and Transfer/Scheme = musl, in three
+// configurations: P1 lumped, Powell-Sabin lumped and Powell-Sabin
 // consistent mass. Each scene is set up once (Simulator::setup() and one
 // do_time_step, so that stresses and grid fields are those of a running
 // simulation) and kept for all benchmarks of its configuration and size.
