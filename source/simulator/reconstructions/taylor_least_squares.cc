@@ -52,8 +52,9 @@ namespace psmpm
        * depend on it.
        *
        * Memory: the rule, the space's values and gradients at its points
-       * are kept for every owned cell (Powell-Sabin: 42 x 12 x 3 doubles,
-       * 12 kB per cell): meant for the chapter's and the thesis' scenes.
+       * are kept for every owned cell (Powell-Sabin: 42 points x 9 functions x
+       * 3 doubles, 9 kB per cell): meant for the chapter's and the thesis'
+       * scenes.
        */
       template <int dim>
       class TaylorLeastSquares : public Reconstruction<dim>
