@@ -69,6 +69,7 @@
 
 #include <psmpm/app/application.h>
 #include <psmpm/base/phase_timer.h>
+#include <psmpm/simulator/point_accumulation.h>
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
@@ -216,23 +217,19 @@ namespace
         const Tensor<1, 2>           momentum =
           momentum_weight != 0 ? momentum_weight * m * particles.velocity[p] :
                                            Tensor<1, 2>();
-        const Tensor<1, 2>  external = force_weight * m * state.gravity;
-        const double        volume   = force_weight * particles.volume[p];
-        const double       *phi      = &state.shape_values[p * n];
-        const Tensor<1, 2> *grad     = &state.shape_gradients[p * n];
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            lumped[base + k] += m * phi[k];
-            rhs[base + k] +=
-              phi[k] * (momentum + external) - volume * (s * grad[k]);
-            if (consistent)
-              {
-                double      *row = mass_mat + (base + k) * n;
-                const double mk  = m * phi[k];
-                for (unsigned int l = 0; l < n; ++l)
-                  row[l] += mk * phi[l];
-              }
-          }
+        // The library's own per-point accumulation.
+        psmpm::Simulator::add_point<2>(n,
+                                       m,
+                                       momentum +
+                                         force_weight * m * state.gravity,
+                                       force_weight * particles.volume[p],
+                                       s,
+                                       &state.shape_values[p * n],
+                                       &state.shape_gradients[p * n],
+                                       lumped + base,
+                                       consistent ? mass_mat + base * n :
+                                                    nullptr,
+                                       rhs + base);
       }
   }
 

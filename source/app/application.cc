@@ -9,6 +9,7 @@
 #include <psmpm/app/output_directory.h>
 #include <psmpm/app/run_limits.h>
 #include <psmpm/base/checked_file.h>
+#include <psmpm/base/cpu_time.h>
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
 #include <psmpm/postprocess/summary.h>
@@ -23,27 +24,9 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <sys/resource.h>
 
 namespace psmpm
 {
-  namespace
-  {
-    /// User + system CPU seconds of this process so far (getrusage): the
-    /// cost of a run that other load on the machine hardly changes, unlike
-    /// its wall time (summary.json `cpu_time_s`, rank 0's process).
-    double
-    process_cpu_seconds()
-    {
-      rusage usage;
-      getrusage(RUSAGE_SELF, &usage);
-      const auto seconds = [](const timeval &t) {
-        return t.tv_sec + 1e-6 * t.tv_usec;
-      };
-      return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-    }
-  } // namespace
-
   namespace App
   {
     using namespace dealii;

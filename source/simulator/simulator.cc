@@ -7,6 +7,7 @@
 
 #include <psmpm/base/archive.h>
 #include <psmpm/base/checked_file.h>
+#include <psmpm/base/cpu_time.h>
 #include <psmpm/base/format.h>
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
@@ -24,8 +25,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <sys/resource.h>
-
 namespace psmpm
 {
   namespace Simulator
@@ -36,16 +35,6 @@ namespace psmpm
       split(const std::string &s)
       {
         return Utilities::split_string_list(s, ',');
-      }
-
-      /// User + system CPU seconds of this process so far (getrusage).
-      double
-      process_cpu_seconds()
-      {
-        rusage usage;
-        getrusage(RUSAGE_SELF, &usage);
-        return usage.ru_utime.tv_sec + 1e-6 * usage.ru_utime.tv_usec +
-               usage.ru_stime.tv_sec + 1e-6 * usage.ru_stime.tv_usec;
       }
 
       /// Whether @p value is on a space's list of verified mass matrices

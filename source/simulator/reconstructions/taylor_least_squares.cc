@@ -166,6 +166,18 @@ namespace psmpm
         static void
         cholesky_solve(const Fit &fit, const unsigned int n, T *b);
 
+        /// The particles of @p cell as quadrature points (as in
+        /// TransferScheme::particles_to_grid()): mass, momentum_weight m v
+        /// + force_weight m g, and stress_weight V sigma into the cell's
+        /// arrays (@p mass: its consistent block, or nullptr).
+        void
+        add_particles(State<dim>        &state,
+                      const unsigned int cell,
+                      const double       momentum_weight,
+                      const double       force_weight,
+                      const double       stress_weight,
+                      double            *mass) const;
+
         /// Which cells take the fit this step (see the class comment).
         void
         mark_interior_cells(const State<dim> &state);
@@ -490,6 +502,40 @@ namespace psmpm
 
       template <int dim>
       void
+      TaylorLeastSquares<dim>::add_particles(State<dim>        &state,
+                                             const unsigned int cell,
+                                             const double       momentum_weight,
+                                             const double       force_weight,
+                                             const double       stress_weight,
+                                             double            *mass) const
+      {
+        const auto        &particles = state.particles;
+        auto              &cells     = state.grid->cell_arrays();
+        const unsigned int n = n_dofs, base = cell * n;
+        for (unsigned int i = offsets[cell]; i < offsets[cell + 1]; ++i)
+          {
+            const unsigned int   p = order[i];
+            const double         m = particles.mass[p];
+            const Tensor<1, dim> momentum =
+              momentum_weight != 0 ?
+                momentum_weight * m * particles.velocity[p] :
+                Tensor<1, dim>();
+            add_point<dim>(n,
+                           m,
+                           momentum + force_weight * m * state.gravity,
+                           stress_weight * particles.volume[p],
+                           particles.stress[p],
+                           &state.shape_values[p * n],
+                           &state.shape_gradients[p * n],
+                           &cells.lumped[base],
+                           mass,
+                           &cells.rhs[base]);
+          }
+      }
+
+
+      template <int dim>
+      void
       TaylorLeastSquares<dim>::mass_and_forces(State<dim>  &state,
                                                const double momentum_weight,
                                                const double force_weight)
@@ -511,25 +557,12 @@ namespace psmpm
             // Mass (eq. 4.5), external force and momentum from the
             // particles; their stress only where the cell is not fitted.
             const bool fitted = interior[c];
-            for (unsigned int i = begin; i < end; ++i)
-              {
-                const unsigned int   p = order[i];
-                const double         m = particles.mass[p];
-                const Tensor<1, dim> momentum =
-                  momentum_weight != 0 ?
-                    momentum_weight * m * particles.velocity[p] :
-                    Tensor<1, dim>();
-                add_point<dim>(n,
-                               m,
-                               momentum + force_weight * m * state.gravity,
-                               fitted ? 0. : force_weight * particles.volume[p],
-                               particles.stress[p],
-                               &state.shape_values[p * n],
-                               &state.shape_gradients[p * n],
-                               &cells.lumped[base],
-                               mass,
-                               &cells.rhs[base]);
-              }
+            add_particles(state,
+                          c,
+                          momentum_weight,
+                          force_weight,
+                          fitted ? 0. : force_weight,
+                          mass);
             if (!fitted || force_weight == 0)
               continue;
             // Internal force of the fitted stress (eqs. 4.36-4.38).
@@ -586,21 +619,7 @@ namespace psmpm
             double *const mass = consistent ? &cells.mass[base * n] : nullptr;
             if (!interior[c])
               {
-                for (unsigned int i = begin; i < end; ++i)
-                  {
-                    const unsigned int p = order[i];
-                    const double       m = particles.mass[p];
-                    add_point<dim>(n,
-                                   m,
-                                   m * particles.velocity[p],
-                                   0.,
-                                   particles.stress[p],
-                                   &state.shape_values[p * n],
-                                   &state.shape_gradients[p * n],
-                                   &cells.lumped[base],
-                                   mass,
-                                   &cells.rhs[base]);
-                  }
+                add_particles(state, c, 1., 0., 0., mass);
                 continue;
               }
             factorize(state, c, fit);
