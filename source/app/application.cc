@@ -521,6 +521,10 @@ end
               prm.enter_subsection("Basis");
               basis = prm.get("Type");
               prm.leave_subsection();
+              // The projection integrates on Powell-Sabin sub-triangles.
+              AssertThrow(mesh.type != Mesh::MeshGenerator<2>::Type::cartesian,
+                          ExcMessage("Mesh/Type = cartesian: Problem = l2 "
+                                     "projection runs on triangles only."));
             }
         }
       catch (const std::bad_alloc &)

@@ -33,7 +33,115 @@ namespace psmpm
     void
     CellLocator<dim>::reinit(const Triangulation<dim> &tria)
     {
-      set_up_search(set_up_cells(tria));
+      quads = dim == 2 && tria.n_active_cells() > 0 &&
+              tria.begin_active()->reference_cell() ==
+                ReferenceCells::get_hypercube<dim>();
+      if (quads)
+        set_up_cartesian(tria);
+      else
+        set_up_search(set_up_cells(tria));
+    }
+
+
+
+    template <int dim>
+    void
+    CellLocator<dim>::set_up_cartesian(const Triangulation<dim> &tria)
+    {
+      const unsigned int n = tria.n_active_cells();
+      const std::string  not_cartesian =
+        "a mesh of quadrilaterals must be Cartesian (axis-parallel "
+        "rectangles on a tensor-product grid, Mesh/Type = cartesian)";
+      boxes.resize(n);
+      maps.clear();
+      neighbors.clear();
+      // Grid lines: the distinct vertex coordinates, merged within a
+      // relative tolerance (vertices shared by cells are the same
+      // points, so this only guards against input that nearly repeats).
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          auto &lines = grid_lines[d];
+          lines.clear();
+          for (const auto &v : tria.get_vertices())
+            lines.push_back(v[d]);
+          std::sort(lines.begin(), lines.end());
+          const double span = lines.back() - lines.front();
+          lines.erase(std::unique(lines.begin(),
+                                  lines.end(),
+                                  [span](const double a, const double b) {
+                                    return b - a <= 1e-12 * span;
+                                  }),
+                      lines.end());
+        }
+      const auto index = [this](const unsigned int d, const double x) {
+        return static_cast<unsigned int>(
+          std::lower_bound(grid_lines[d].begin(),
+                           grid_lines[d].end(),
+                           x - 1e-12 * (grid_lines[d].back() -
+                                        grid_lines[d].front())) -
+          grid_lines[d].begin());
+      };
+      const unsigned int nx = grid_lines[0].size() - 1;
+      const unsigned int ny = dim == 2 ? grid_lines[dim - 1].size() - 1 : 1;
+      AssertThrow(nx * ny == n,
+                  ExcMessage("CellLocator: " + not_cartesian + "; " +
+                             std::to_string(n) + " cells on " +
+                             std::to_string(nx) + " x " + std::to_string(ny) +
+                             " grid lines."));
+      cell_at.assign(n, invalid);
+      min_height = std::numeric_limits<double>::max();
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const unsigned int c  = cell->active_cell_index();
+          const Point<dim>   lo = cell->vertex(0);
+          const Point<dim>   hi =
+            cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+          std::array<unsigned int, dim> ij;
+          bool                          ok = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              ij[d] = index(d, lo[d]);
+              ok    = ok && ij[d] + 1 < grid_lines[d].size() &&
+                   index(d, hi[d]) == ij[d] + 1;
+              min_height = std::min(min_height, hi[d] - lo[d]);
+            }
+          // Every vertex on a corner of the box (lexicographic order).
+          for (unsigned int v = 0; ok && v < cell->n_vertices(); ++v)
+            for (unsigned int d = 0; d < dim; ++d)
+              ok = ok && cell->vertex(v)[d] == (((v >> d) & 1) ? hi[d] : lo[d]);
+          const unsigned int at = dim == 2 ? ij[dim - 1] * nx + ij[0] : ij[0];
+          AssertThrow(ok && cell_at[at] == invalid,
+                      ExcMessage("CellLocator: " + not_cartesian + "; cell " +
+                                 std::to_string(c) +
+                                 " is not one of its rectangles."));
+          cell_at[at] = c;
+          boxes[c]    = {{lo, hi}};
+        }
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    CellLocator<dim>::search_cartesian(const Point<dim> &p) const
+    {
+      unsigned int at = 0, stride = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const auto  &lines  = grid_lines[d];
+          const double margin = tolerance * (lines.back() - lines.front());
+          if (!(p[d] >= lines.front() - margin &&
+                p[d] <= lines.back() + margin))
+            return invalid;
+          // The last line at or left of p starts its cell (clamped: the
+          // upper end belongs to the last cell).
+          const std::size_t i =
+            std::upper_bound(lines.begin(), lines.end(), p[d]) - lines.begin();
+          at += stride * static_cast<unsigned int>(
+                           std::clamp<std::size_t>(i, 1, lines.size() - 1) - 1);
+          stride *= lines.size() - 1;
+        }
+      return cell_at[at];
     }
 
 
@@ -196,6 +304,8 @@ namespace psmpm
     unsigned int
     CellLocator<dim>::locate(const Point<dim> &p) const
     {
+      if (quads)
+        return search_cartesian(p);
       if (!box.point_inside(p))
         return invalid;
       return search(p);
@@ -207,6 +317,8 @@ namespace psmpm
     unsigned int
     CellLocator<dim>::locate(const Point<dim> &p, const unsigned int hint) const
     {
+      if (quads)
+        return contains(hint, p) ? hint : search_cartesian(p);
       unsigned int cell = hint;
       // A walk in a convex mesh needs at most as many steps as cells it
       // crosses; bound it and fall back to the search from scratch.

@@ -38,10 +38,11 @@ namespace psmpm
         prm.declare_entry(
           "Type",
           "criss-cross",
-          Patterns::Selection("criss-cross|diagonal|gmsh"),
+          Patterns::Selection("criss-cross|diagonal|cartesian|gmsh"),
           "criss-cross: each block split into 4 triangles around its "
-          "centre; diagonal: each block split into 2 triangles; gmsh: read "
-          "'File'.");
+          "centre; diagonal: each block split into 2 triangles; cartesian: "
+          "each block one quadrilateral (for Basis/Type = bspline, the "
+          "tensor-product B-splines); gmsh: read 'File'.");
         prm.declare_entry("Blocks x",
                           "4",
                           Patterns::Integer(1),
@@ -71,6 +72,7 @@ namespace psmpm
       const std::string t = prm.get("Type");
       type                = (t == "criss-cross" ? Type::criss_cross :
                              t == "diagonal"    ? Type::diagonal :
+                             t == "cartesian"   ? Type::cartesian :
                                                   Type::gmsh);
       blocks_x            = prm.get_integer("Blocks x");
       blocks_y            = prm.get_integer("Blocks y");
@@ -170,6 +172,18 @@ namespace psmpm
                                     const Type         type)
     {
       Assert(type != Type::gmsh, ExcInternalError());
+      if (type == Type::cartesian)
+        {
+          // Quadrilaterals, lexicographic (x fastest), colorized with the
+          // same ids as the triangle blocks below.
+          GridGenerator::subdivided_hyper_rectangle(
+            tria,
+            std::vector<unsigned int>{nx, ny},
+            lower,
+            upper,
+            true);
+          return;
+        }
       const double hx = (upper[0] - lower[0]) / nx;
       const double hy = (upper[1] - lower[1]) / ny;
 

@@ -135,6 +135,20 @@ namespace psmpm
         return points;
       }
 
+      /// The (s + 1)^2 points v0 + i/s (v1 - v0) + j/s (v2 - v0),
+      /// 0 <= i, j <= s, i fastest: the order in which deal.II reads a
+      /// quadrilateral patch with n_subdivisions = s (2D, rectangles).
+      std::vector<Point<2>>
+      box_lattice_points(const std::array<Point<2>, 3> &v, const unsigned int s)
+      {
+        std::vector<Point<2>> points;
+        for (unsigned int j = 0; j <= s; ++j)
+          for (unsigned int i = 0; i <= s; ++i)
+            points.push_back(v[0] + (double(i) / s) * (v[1] - v[0]) +
+                             (double(j) / s) * (v[2] - v[0]));
+        return points;
+      }
+
       /// Position of lattice point (i, j) in lattice_points() (2D).
       unsigned int
       lattice_index(const unsigned int i,
@@ -462,14 +476,22 @@ namespace psmpm
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            Assert(cell->reference_cell() == ReferenceCells::get_simplex<dim>(),
-                   ExcMessage("psmpm: grid output expects simplex cells."));
+            // Rectangles (Mesh/Type = cartesian) are drawn as one
+            // quadrilateral patch each, triangles as s^2 triangles.
+            const bool quad =
+              dim == 2 &&
+              cell->reference_cell() == ReferenceCells::get_hypercube<dim>();
             const unsigned int              c = cell->active_cell_index();
             std::array<Point<dim>, dim + 1> v;
             for (unsigned int i = 0; i <= dim; ++i)
               v[i] = cell->vertex(i);
-            const std::vector<Point<dim>> points   = lattice_points<dim>(v, s);
-            const unsigned int            n_points = points.size();
+            std::vector<Point<dim>> points;
+            if constexpr (dim == 2)
+              points =
+                quad ? box_lattice_points(v, s) : lattice_points<dim>(v, s);
+            else
+              points = lattice_points<dim>(v, s);
+            const unsigned int n_points = points.size();
             // On a moved grid the cell is affinely mapped: the lattice
             // point of the same barycentric coordinates carries the same
             // values, drawn at its moved position.
@@ -531,6 +553,19 @@ namespace psmpm
                 patch.patch_index    = patches.size();
                 patch.vertices[0]    = w[0];
                 patch.vertices[1]    = w[1];
+                patch.data.reinit(names.size(), n_points);
+                for (unsigned int q = 0; q < n_points; ++q)
+                  fill(patch, q, q);
+                patches.push_back(std::move(patch));
+              }
+            else if (quad)
+              {
+                DataOutBase::Patch<dim, dim> patch;
+                patch.reference_cell = ReferenceCells::get_hypercube<dim>();
+                patch.n_subdivisions = s;
+                patch.patch_index    = patches.size();
+                for (unsigned int i = 0; i < cell->n_vertices(); ++i)
+                  patch.vertices[i] = cell->vertex(i);
                 patch.data.reinit(names.size(), n_points);
                 for (unsigned int q = 0; q < n_points; ++q)
                   fill(patch, q, q);

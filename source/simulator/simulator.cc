@@ -215,18 +215,19 @@ namespace psmpm
       // The choice for a closed, filled mesh is made once the mesh is
       // known (setup_space_and_grid); its transfer is created here, where
       // its parameters are.
-      // (Not for a space that was not verified with partially lumped
-      // mass: it keeps its own default.)
+      // (Not for a space that was not verified with its closed-mesh
+      // choice: it keeps its own default.)
       closed_rule =
         mass_automatic && !grid_moves &&
-        verified(space->verified_mass_matrices(), "partially lumped");
+        verified(space->verified_mass_matrices(), space->closed_mass_matrix());
       closed_transfer_name.clear();
       closed_transfer.reset();
       if (closed_rule)
         {
-          closed_transfer_name = transfer_automatic ?
-                                   space->default_transfer("partially lumped") :
-                                   transfer_name;
+          closed_transfer_name =
+            transfer_automatic ?
+              space->default_transfer(space->closed_mass_matrix()) :
+              transfer_name;
           if (closed_transfer_name != transfer_name)
             closed_transfer =
               TransferSchemeRegistry<dim>::instance()
@@ -327,6 +328,23 @@ namespace psmpm
     {
       state.space = Basis::create_space<dim>(basis_name);
       state.space->set_degree(basis_degree);
+      // The space's functions live on one kind of cell (triangles for
+      // linear and powell-sabin, rectangles for the 2D bspline).
+      if constexpr (dim == 2)
+        {
+          const bool space_on_quads =
+            state.space->dof_layout().reference_cell() ==
+            ReferenceCells::Quadrilateral;
+          AssertThrow(space_on_quads == state.locator.cartesian(),
+                      ExcMessage(
+                        "Basis/Type = " + basis_name +
+                        (space_on_quads ?
+                           " needs a mesh of rectangles (Mesh/Type = "
+                           "cartesian); this mesh is of triangles." :
+                           " needs a mesh of triangles (Mesh/Type = "
+                           "criss-cross, diagonal or gmsh); Mesh/Type = "
+                           "cartesian is for Basis/Type = bspline.")));
+        }
       state.dof_handler.reinit(state.triangulation);
       state.dof_handler.distribute_dofs(state.space->dof_layout());
       state.space->reinit(state.dof_handler);
@@ -365,7 +383,7 @@ namespace psmpm
       if (closed_rule && particle_generator.fills_mesh(state.triangulation) &&
           Mesh::is_closed<dim>(state.triangulation, fixed))
         {
-          grid_parameters.type = "partially lumped";
+          grid_parameters.type = state.space->closed_mass_matrix();
           if (closed_transfer)
             transfer = std::move(closed_transfer);
           transfer_name = closed_transfer_name;

@@ -96,6 +96,27 @@ main(int argc, char **argv)
               head + "subsection Transfer\n set Scheme = flip\nend\n",
               {},
               {"Scheme", "flip", "case.prm"}},
+             {"2D B-splines on triangles",
+              head + "subsection Basis\n set Type = bspline\nend\n",
+              {},
+              {"Basis/Type = bspline", "cartesian", "case.prm"}},
+             {"P1 on rectangles",
+              head + "subsection Mesh\n set Type = cartesian\nend\n",
+              {},
+              {"Basis/Type = linear", "Mesh/Type", "case.prm"}},
+             {"L2 projection on rectangles",
+              head + "set Problem = l2 projection\n"
+                              "subsection Mesh\n set Type = cartesian\nend\n",
+              {},
+              {"Mesh/Type = cartesian", "case.prm"}},
+             {"Taylor least squares on rectangles",
+              head +
+                "subsection Mesh\n set Type = cartesian\nend\n"
+                         "subsection Basis\n set Type = bspline\nend\n"
+                         "subsection Mass matrix\n set Type = consistent\nend\n"
+                         "subsection Transfer\n set Reconstruction = taylor least squares\nend\n",
+              {},
+              {"Transfer/Reconstruction", "cartesian", "case.prm"}},
   };
   for (const auto &c : cases)
     {

@@ -208,6 +208,20 @@ namespace psmpm
       }
 
       /**
+       * What `Mass matrix/Type = automatic` selects instead of
+       * default_mass_matrix() when the material fills a mesh whose
+       * boundaries are all closed in their normal direction, so that no
+       * cell empties for good (P1, Powell-Sabin: partially lumped, see
+       * Simulator::setup_space_and_grid()). Used only if verified with the
+       * space.
+       */
+      virtual std::string
+      closed_mass_matrix() const
+      {
+        return "partially lumped";
+      }
+
+      /**
        * The Mass matrix/Type and Transfer/Scheme names verified with this
        * space; the simulator refuses the others as bad input. Empty: all
        * (linear and powell-sabin, for which every variant was written).

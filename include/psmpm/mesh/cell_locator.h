@@ -25,6 +25,12 @@ namespace psmpm
      * bucket grid over the cells' bounding boxes (2D) or a binary search
      * over the cells sorted by their left end (1D) finds any point and
      * catches walks that leave a non-convex domain.
+     *
+     * 2D meshes of quadrilaterals must be Cartesian (Mesh/Type =
+     * cartesian: axis-parallel rectangles on a tensor-product grid of
+     * lines x_0 < ... < x_nx, y_0 < ... < y_ny, what the tensor-product
+     * B-splines need): a point is then found by two binary searches over
+     * the grid lines, with no walk and no buckets.
      */
     template <int dim>
     class CellLocator
@@ -38,7 +44,14 @@ namespace psmpm
       unsigned int
       n_cells() const
       {
-        return maps.size();
+        return quads ? boxes.size() : maps.size();
+      }
+
+      /// Whether the mesh is of (Cartesian) quadrilaterals.
+      bool
+      cartesian() const
+      {
+        return quads;
       }
 
       /// Barycentric coordinates of @p p with respect to @p cell.
@@ -52,6 +65,17 @@ namespace psmpm
       bool
       contains(const unsigned int cell, const Point<dim> &p) const
       {
+        if (quads)
+          {
+            const auto &b = boxes[cell];
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double margin = tolerance * (b[1][d] - b[0][d]);
+                if (!(p[d] >= b[0][d] - margin && p[d] <= b[1][d] + margin))
+                  return false;
+              }
+            return true;
+          }
         const auto l = maps[cell](p);
         for (unsigned int k = 0; k <= dim; ++k)
           if (!(l[k] >= -tolerance))
@@ -69,8 +93,8 @@ namespace psmpm
       unsigned int
       locate(const Point<dim> &p) const;
 
-      /// Smallest height of any triangle, or length of any line (for the
-      /// time step bound).
+      /// Smallest height of any triangle, length of any line, or side of
+      /// any rectangle (for the time step bound).
       double
       minimum_height() const
       {
@@ -81,6 +105,14 @@ namespace psmpm
       static constexpr double tolerance = 1e-12;
 
       std::vector<SimplexMap<dim>> maps;
+
+      /// Cartesian quadrilaterals: the lower and upper corner of each
+      /// cell, the grid lines in each direction, and the cell of grid
+      /// position (i, j) at cell_at[j * nx + i].
+      bool                                   quads = false;
+      std::vector<std::array<Point<dim>, 2>> boxes;
+      std::array<std::vector<double>, dim>   grid_lines;
+      std::vector<unsigned int>              cell_at;
       /// neighbors[c][k]: the cell across the face opposite vertex k.
       std::vector<std::array<unsigned int, dim + 1>> neighbors;
       double                                         min_height = 0;
@@ -99,6 +131,10 @@ namespace psmpm
 
       std::vector<BoundingBox<dim>>
       set_up_cells(const Triangulation<dim> &tria);
+      void
+      set_up_cartesian(const Triangulation<dim> &tria);
+      unsigned int
+      search_cartesian(const Point<dim> &p) const;
       void
       set_up_search(const std::vector<BoundingBox<dim>> &boxes);
       std::array<unsigned int, dim>

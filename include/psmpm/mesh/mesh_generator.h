@@ -18,14 +18,15 @@ namespace psmpm
     using namespace dealii;
 
     /**
-     * Creates the simplex mesh of a scene from the subsections "Geometry"
+     * Creates the mesh of a scene from the subsections "Geometry"
      * and "Mesh".
      *
      * 2D: rectangles of Blocks x by Blocks y blocks, each split into four
      * triangles around its centre ("criss-cross", thesis Fig. 4.2) or into
-     * two ("diagonal"), or a Gmsh file. Rectangle boundaries get the ids of
-     * left, right, bottom, top (0, 1, 2, 3); Gmsh physical line tags become
-     * boundary ids and their physical names become boundary names.
+     * two ("diagonal"), or kept as one quadrilateral ("cartesian", for
+     * the tensor-product B-splines), or a Gmsh file. Rectangle boundaries get
+     * the ids of left, right, bottom, top (0, 1, 2, 3); Gmsh physical line tags
+     * become boundary ids and their physical names become boundary names.
      *
      * 1D: Blocks x equal lines on [0, Length] with the boundary ids of
      * left (x = 0) and right (x = Length), 0 and 1. Type (other than gmsh,
@@ -39,6 +40,7 @@ namespace psmpm
       {
         criss_cross,
         diagonal,
+        cartesian,
         gmsh
       };
 

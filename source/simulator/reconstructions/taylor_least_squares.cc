@@ -220,7 +220,12 @@ namespace psmpm
       void
       TaylorLeastSquares<dim>::initialize(const State<dim> &state)
       {
-        const auto        &tria    = state.triangulation;
+        const auto &tria = state.triangulation;
+        // The 2D Taylor basis is written in barycentric coordinates.
+        AssertThrow(dim == 1 || tria.all_reference_cells_are_simplex(),
+                    ExcMessage("Transfer/Reconstruction = taylor least "
+                               "squares: in 2D implemented on triangles "
+                               "only, not on Mesh/Type = cartesian."));
         const unsigned int n_cells = tria.n_active_cells();
         n_dofs                     = state.space->dofs_per_cell();
         origin.assign(n_cells, Point<dim>());

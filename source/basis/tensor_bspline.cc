@@ -1,0 +1,445 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <psmpm/basis/bspline.h>
+#include <psmpm/basis/tensor_bspline.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Basis
+  {
+    namespace
+    {
+      /// Bernstein polynomials of degree p at t and their derivatives in
+      /// t, by de Casteljau's triangle (non-negative terms only).
+      void
+      bernstein(const unsigned int p, const double t, double *b, double *db)
+      {
+        const double s                              = 1 - t;
+        double       lower[BSpline::max_degree + 1] = {};
+        b[0]                                        = 1;
+        for (unsigned int r = 1; r <= p; ++r)
+          {
+            if (r == p)
+              std::copy(b, b + p, lower);
+            b[r] = t * b[r - 1];
+            for (unsigned int j = r - 1; j >= 1; --j)
+              b[j] = s * b[j] + t * b[j - 1];
+            b[0] = s * b[0];
+          }
+        // d/dt B^p_j = p (B^{p-1}_{j-1} - B^{p-1}_j).
+        for (unsigned int j = 0; j <= p; ++j)
+          db[j] = p * ((j >= 1 ? lower[j - 1] : 0.) - (j < p ? lower[j] : 0.));
+      }
+    } // namespace
+
+    TensorBSpline::TensorBSpline()
+      : p(2)
+      , fe(std::make_unique<FE_Q<2>>(2))
+    {
+    }
+
+    std::string
+    TensorBSpline::name() const
+    {
+      return "bspline";
+    }
+
+    void
+    TensorBSpline::set_degree(const unsigned int degree)
+    {
+      // The univariate space checks the range with the same message.
+      BSpline univariate;
+      univariate.set_degree(degree);
+      if (degree != p)
+        {
+          p  = degree;
+          fe = std::make_unique<FE_Q<2>>(p);
+          cell_data.clear();
+        }
+    }
+
+    const FiniteElement<2> &
+    TensorBSpline::dof_layout() const
+    {
+      return *fe;
+    }
+
+    void
+    TensorBSpline::reinit(const DoFHandler<2> &dof_handler)
+    {
+      const auto &tria = dof_handler.get_triangulation();
+      AssertThrow(tria.all_reference_cells_are_hyper_cube(),
+                  ExcMessage("Basis/Type = bspline in 2D needs a mesh of "
+                             "rectangles: Mesh/Type = cartesian."));
+      AssertThrow(dof_handler.has_active_dofs() &&
+                    dof_handler.get_fe().n_dofs_per_cell() == (p + 1) * (p + 1),
+                  ExcMessage("TensorBSpline::reinit: the DoFHandler must use "
+                             "the space's dof_layout()."));
+
+      // Lattice offsets of the local DoFs: the rank of each coordinate of
+      // the unit support point among the p + 1 distinct ones.
+      const auto         &support = fe->get_unit_support_points();
+      std::vector<double> levels;
+      for (const auto &q : support)
+        levels.push_back(q[0]);
+      std::sort(levels.begin(), levels.end());
+      levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+      AssertThrow(levels.size() == p + 1, ExcInternalError());
+      local_lattice.resize(support.size());
+      for (unsigned int k = 0; k < support.size(); ++k)
+        for (unsigned int d = 0; d < 2; ++d)
+          local_lattice[k][d] =
+            std::lower_bound(levels.begin(), levels.end(), support[k][d]) -
+            levels.begin();
+
+      // Grid lines: the distinct vertex coordinates (shared vertices are
+      // the same points, so exact comparison finds them).
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          lines[d].clear();
+          for (const auto &v : tria.get_vertices())
+            lines[d].push_back(v[d]);
+          std::sort(lines[d].begin(), lines[d].end());
+          lines[d].erase(std::unique(lines[d].begin(), lines[d].end()),
+                         lines[d].end());
+        }
+      const std::string not_cartesian =
+        "Basis/Type = bspline in 2D needs a Cartesian mesh (axis-parallel "
+        "rectangles on a tensor-product grid, Mesh/Type = cartesian)";
+      AssertThrow((lines[0].size() - 1) * (lines[1].size() - 1) ==
+                    tria.n_active_cells(),
+                  ExcMessage(not_cartesian + "."));
+      cell_data.resize(tria.n_active_cells());
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const Point<2> lo = cell->vertex(0), hi = cell->vertex(3);
+          CellGeometry  &data = cell_data[cell->active_cell_index()];
+          data.origin         = lo;
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              const auto i =
+                std::lower_bound(lines[d].begin(), lines[d].end(), lo[d]) -
+                lines[d].begin();
+              AssertThrow(i + 1 < static_cast<long>(lines[d].size()) &&
+                            lines[d][i + 1] == hi[d],
+                          ExcMessage(not_cartesian + "; cell " +
+                                     std::to_string(cell->active_cell_index()) +
+                                     " is not one of its rectangles."));
+              data.position[d]       = i;
+              data.inverse_length[d] = 1 / (hi[d] - lo[d]);
+            }
+        }
+      for (unsigned int d = 0; d < 2; ++d)
+        ties[d] = univariate_ties(d);
+    }
+
+    std::vector<TensorBSpline::Tie>
+    TensorBSpline::univariate_ties(const unsigned int d) const
+    {
+      // The univariate space on the grid lines of direction d, cells
+      // numbered left to right with vertex 0 on the left.
+      const unsigned int    n = lines[d].size() - 1;
+      std::vector<Point<1>> vertices;
+      for (const double x : lines[d])
+        vertices.emplace_back(x);
+      std::vector<dealii::CellData<1>> cells(n);
+      for (unsigned int k = 0; k < n; ++k)
+        cells[k].vertices = {k, k + 1};
+      Triangulation<1> line;
+      line.create_triangulation(vertices, cells, SubCellData());
+      BSpline univariate;
+      univariate.set_degree(p);
+      DoFHandler<1> dof_handler(line);
+      dof_handler.distribute_dofs(univariate.dof_layout());
+      univariate.reinit(dof_handler);
+      AffineConstraints<double> constraints;
+      univariate.make_space_constraints(dof_handler, constraints);
+
+      // Lattice line of every univariate DoF: Bernstein j of cell k is
+      // k p + j; FE_Q<1> numbers vertex 0, vertex 1, then the interior.
+      std::vector<unsigned int>            lattice_of(dof_handler.n_dofs());
+      std::vector<types::global_dof_index> dofs(p + 1);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          const unsigned int k = cell->vertex_index(0);
+          for (unsigned int j = 0; j <= p; ++j)
+            lattice_of[dofs[j == 0 ? 0 : (j == p ? 1 : j + 1)]] = k * p + j;
+        }
+      std::vector<Tie> result(n * p + 1);
+      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+        if (const auto *entries = constraints.get_constraint_entries(i))
+          for (const auto &[target, w] : *entries)
+            {
+              // BSpline ties every DoF to free DoFs directly (no chains).
+              Assert(!constraints.is_constrained(target), ExcInternalError());
+              result[lattice_of[i]].emplace_back(lattice_of[target], w);
+            }
+      return result;
+    }
+
+    std::array<unsigned int, 2>
+    TensorBSpline::lattice(const unsigned int c, const unsigned int k) const
+    {
+      return {{cell_data[c].position[0] * p + local_lattice[k][0],
+               cell_data[c].position[1] * p + local_lattice[k][1]}};
+    }
+
+    Point<2>
+    TensorBSpline::control_point(const std::array<unsigned int, 2> &IJ) const
+    {
+      Point<2> x;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const unsigned int i =
+            std::min<unsigned int>(IJ[d] / p, lines[d].size() - 2);
+          const unsigned int a = IJ[d] - i * p;
+          x[d] = lines[d][i] + (lines[d][i + 1] - lines[d][i]) * a / p;
+        }
+      return x;
+    }
+
+    void
+    TensorBSpline::evaluate(const unsigned int cell,
+                            const Point<2>    &x,
+                            double            *values,
+                            Tensor<1, 2>      *gradients) const
+    {
+      AssertIndexRange(cell, cell_data.size());
+      const CellGeometry &data = cell_data[cell];
+      double b[2][BSpline::max_degree + 1], db[2][BSpline::max_degree + 1];
+      for (unsigned int d = 0; d < 2; ++d)
+        bernstein(p,
+                  (x[d] - data.origin[d]) * data.inverse_length[d],
+                  b[d],
+                  db[d]);
+      const unsigned int n = local_lattice.size();
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const auto [a, c] = local_lattice[k];
+          values[k]         = b[0][a] * b[1][c];
+          if (gradients != nullptr)
+            {
+              gradients[k][0] = db[0][a] * data.inverse_length[0] * b[1][c];
+              gradients[k][1] = b[0][a] * db[1][c] * data.inverse_length[1];
+            }
+        }
+    }
+
+    void
+    TensorBSpline::evaluate(const unsigned int  n,
+                            const unsigned int *cells,
+                            const Point<2>     *points,
+                            double             *values,
+                            Tensor<1, 2>       *gradients) const
+    {
+      // Qualified call: no virtual dispatch per point.
+      const unsigned int k = local_lattice.size();
+      for (unsigned int i = 0; i < n; ++i)
+        TensorBSpline::evaluate(cells[i],
+                                points[i],
+                                values + k * i,
+                                gradients != nullptr ? gradients + k * i :
+                                                       nullptr);
+    }
+
+    void
+    TensorBSpline::make_space_constraints(
+      const DoFHandler<2>       &dof_handler,
+      AffineConstraints<double> &constraints) const
+    {
+      if (p == 1)
+        return;
+      AssertThrow(cell_data.size() ==
+                    dof_handler.get_triangulation().n_active_cells(),
+                  ExcMessage("TensorBSpline::make_space_constraints: call "
+                             "reinit() with this mesh first."));
+      const unsigned int columns = (lines[0].size() - 1) * p + 1;
+      const unsigned int rows    = (lines[1].size() - 1) * p + 1;
+      // The shared triangulation keeps every cell: every lattice point's
+      // DoF is at hand.
+      std::vector<types::global_dof_index> dof_at(columns * rows);
+      std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int k = 0; k < dofs.size(); ++k)
+            {
+              const auto IJ = lattice(cell->active_cell_index(), k);
+              dof_at[IJ[1] * columns + IJ[0]] = dofs[k];
+            }
+        }
+      for (unsigned int J = 0; J < rows; ++J)
+        for (unsigned int I = 0; I < columns; ++I)
+          {
+            if (ties[0][I].empty() && ties[1][J].empty())
+              continue;
+            const auto dof = dof_at[J * columns + I];
+            if (!constraints.can_store_line(dof) ||
+                constraints.is_constrained(dof))
+              continue;
+            const Tie x = ties[0][I].empty() ? Tie{{I, 1.}} : ties[0][I];
+            const Tie y = ties[1][J].empty() ? Tie{{J, 1.}} : ties[1][J];
+            constraints.add_line(dof);
+            for (const auto &[L, wy] : y)
+              for (const auto &[K, wx] : x)
+                if (wx * wy != 0)
+                  constraints.add_entry(dof, dof_at[L * columns + K], wx * wy);
+          }
+    }
+
+    void
+    TensorBSpline::make_dirichlet_constraints(
+      const DoFHandler<2>                &dof_handler,
+      const std::set<types::boundary_id> &ids,
+      const Function<2>                  &g,
+      AffineConstraints<double>          &constraints) const
+    {
+      std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (cell->is_artificial())
+            continue;
+          cell->get_dof_indices(dofs);
+          const unsigned int c = cell->active_cell_index();
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (!cell->at_boundary(f) ||
+                  ids.count(cell->face(f)->boundary_id()) == 0)
+                continue;
+              // Faces 0, 1: x = x_lo, x_hi; 2, 3: y = y_lo, y_hi.
+              const unsigned int d = f / 2, end = (f % 2) * p;
+              for (unsigned int k = 0; k < dofs.size(); ++k)
+                if (local_lattice[k][d] == end &&
+                    constraints.can_store_line(dofs[k]) &&
+                    !constraints.is_constrained(dofs[k]))
+                  {
+                    constraints.add_line(dofs[k]);
+                    constraints.set_inhomogeneity(dofs[k],
+                                                  g.value(control_point(
+                                                    lattice(c, k))));
+                  }
+            }
+        }
+    }
+
+    std::vector<Point<2>>
+    TensorBSpline::control_points(const DoFHandler<2> &dof_handler) const
+    {
+      std::vector<Point<2>>                points(dof_handler.n_dofs());
+      std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int k = 0; k < dofs.size(); ++k)
+            points[dofs[k]] =
+              control_point(lattice(cell->active_cell_index(), k));
+        }
+      return points;
+    }
+
+    FullMatrix<double>
+    TensorBSpline::extrapolation_weights(const unsigned int,
+                                         const unsigned int) const
+    {
+      AssertThrow(false,
+                  ExcMessage("Basis/Type = bspline has no extrapolation "
+                             "weights (Mass matrix/Type = extrapolate is not "
+                             "available with it)."));
+      return FullMatrix<double>();
+    }
+
+    Quadrature<2>
+    TensorBSpline::cell_quadrature(const DoFHandler<2> &dof_handler,
+                                   const unsigned int   cell) const
+    {
+      AssertThrow(cell < cell_data.size() &&
+                    cell_data.size() ==
+                      dof_handler.get_triangulation().n_active_cells(),
+                  ExcMessage("TensorBSpline::cell_quadrature: call reinit() "
+                             "with this mesh first."));
+      const CellGeometry   &data = cell_data[cell];
+      const QGauss<2>       reference(p + 1);
+      std::vector<Point<2>> points(reference.size());
+      std::vector<double>   weights(reference.size());
+      const double area = 1 / (data.inverse_length[0] * data.inverse_length[1]);
+      for (unsigned int q = 0; q < reference.size(); ++q)
+        {
+          for (unsigned int d = 0; d < 2; ++d)
+            points[q][d] =
+              data.origin[d] + reference.point(q)[d] / data.inverse_length[d];
+          weights[q] = area * reference.weight(q);
+        }
+      return Quadrature<2>(points, weights);
+    }
+
+    double
+    TensorBSpline::stability_factor(const bool lumped) const
+    {
+      // The tensor-product stiffness and mass matrices are Kronecker sums
+      // and products of the univariate ones, K = K_x (x) M_y + M_x (x) K_y
+      // and M = M_x (x) M_y for a scalar wave, so the largest eigenvalue of
+      // M^-1 K on square cells is twice the univariate one: the univariate
+      // factor (BSpline::stability_factor(), relative to the cell length)
+      // over sqrt(2), relative to the shorter side.
+      BSpline univariate;
+      univariate.set_degree(p);
+      return univariate.stability_factor(lumped) / std::sqrt(2.);
+    }
+
+    std::string
+    TensorBSpline::default_mass_matrix(const bool) const
+    {
+      return p <= 2 ? "lumped" : "consistent";
+    }
+
+    std::string
+    TensorBSpline::closed_mass_matrix() const
+    {
+      return "consistent";
+    }
+
+    std::vector<std::string>
+    TensorBSpline::verified_mass_matrices() const
+    {
+      // As in 1D (BSpline::verified_mass_matrices()): for p >= 3 the free
+      // DoFs' functions are not the B-splines and their lumped rows are
+      // not a sound mass.
+      if (p <= 2)
+        return {"lumped", "consistent"};
+      return {"consistent"};
+    }
+
+    std::vector<std::string>
+    TensorBSpline::verified_transfers() const
+    {
+      return {"musl", "usl"};
+    }
+
+    namespace
+    {
+      std::unique_ptr<Space<2>>
+      make_tensor_bspline()
+      {
+        return std::make_unique<TensorBSpline>();
+      }
+
+      const Registration<SpaceRegistry<2>> register_tensor_bspline(
+        {"bspline",
+         "tensor-product B-splines of Basis/Degree p (1 to 5) with maximal "
+         "continuity on the open knot vectors of a Cartesian mesh "
+         "(Mesh/Type = cartesian; BSMPM), by Bezier extraction on the "
+         "FE_Q(p) layout; lumped mass for p <= 2 only",
+         &make_tensor_bspline,
+         nullptr});
+    } // namespace
+  }   // namespace Basis
+} // namespace psmpm
