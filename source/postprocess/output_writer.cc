@@ -9,11 +9,16 @@
 #include <psmpm/postprocess/output_writer.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <regex>
 #include <tuple>
+#include <zlib.h>
 
 namespace psmpm
 {
@@ -50,43 +55,54 @@ namespace psmpm
           names.push_back(name + "_" + component_suffix[d]);
       }
 
-      /// Write this rank's piece and, on rank 0, the .pvtu record; return
-      /// the name of the record for the .pvd series.
-      template <int patch_dim, int spacedim>
-      std::string
-      write_pieces(
-        const std::string                                          &directory,
-        const std::string                                          &base,
-        const unsigned int                                          step,
-        const std::vector<std::string>                             &names,
-        const Ranges                                               &ranges,
-        const std::vector<DataOutBase::Patch<patch_dim, spacedim>> &patches,
-        MPI_Comm                                                    comm)
+      /// The VTU flags of every piece and record: zlib-compressed binary,
+      /// compressed for speed (the output is written during the run).
+      DataOutBase::VtkFlags
+      vtk_flags()
       {
-        const unsigned int    rank = Utilities::MPI::this_mpi_process(comm);
-        const unsigned int    size = Utilities::MPI::n_mpi_processes(comm);
         DataOutBase::VtkFlags flags;
         flags.compression_level = DataOutBase::VtkFlags::best_speed;
+        return flags;
+      }
+
+      /// Write this rank's piece with @p write_piece and, on rank 0, the
+      /// .pvtu record; return the name of the record for the .pvd series.
+      std::string
+      write_pieces(const std::string                         &directory,
+                   const std::string                         &base,
+                   const unsigned int                         step,
+                   const std::vector<std::string>            &names,
+                   const Ranges                              &ranges,
+                   const std::function<void(std::ostream &)> &write_piece,
+                   MPI_Comm                                   comm)
+      {
+        const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+        const unsigned int size = Utilities::MPI::n_mpi_processes(comm);
         {
           const std::string file =
             directory + "/" + piece_name(base, step, rank);
-          // A piece that cannot be written whole is removed.
-          std::ofstream out(file);
+          // A piece that cannot be written whole is removed, whatever
+          // stopped it (a full disk, or an error inside the writer).
+          std::ofstream out(file, std::ios::binary);
           try
             {
               check_written(out, file);
               try
                 {
-                  DataOutBase::write_vtu(patches, names, ranges, flags, out);
+                  write_piece(out);
                 }
-              catch (const ExceptionBase &)
+              catch (const ExcWriteFailed &)
+                {
+                  throw;
+                }
+              catch (...)
                 {
                   check_written(out, file); // deal.II's ExcIO: say why
                   throw;
                 }
               check_written(out, file);
             }
-          catch (const ExcWriteFailed &)
+          catch (...)
             {
               out.close();
               std::remove(file.c_str());
@@ -101,11 +117,412 @@ namespace psmpm
             for (unsigned int r = 0; r < size; ++r)
               pieces.push_back(piece_name(base, step, r));
             write_atomically(directory + "/" + record, [&](std::ostream &out) {
-              DataOutBase::write_pvtu_record(out, pieces, names, ranges, flags);
+              DataOutBase::write_pvtu_record(out,
+                                             pieces,
+                                             names,
+                                             ranges,
+                                             vtk_flags());
             });
           }
         return record;
       }
+
+
+
+      /**
+       * One inline binary DataArray of a VTU file, zlib-compressed, in the
+       * layout of VTK's vtkZLibDataCompressor that DataOutBase::write_vtu()
+       * writes: a header of UInt32 words (number of blocks, bytes per
+       * block, bytes of the last block, compressed bytes of each block)
+       * base64-encoded on its own, then the compressed blocks as one
+       * base64 stream.
+       *
+       * Why not deal.II: write_vtu() takes one Patch per point, which for
+       * the particles cost about 336 B per particle and set the peak
+       * memory of a run (doc/performance.md). Here the values are pushed
+       * one by one and go through zlib and base64 in chunks of
+       * chunk_bytes, so memory stays at a few chunks (and zlib's state)
+       * whatever the number of values. The compressed sizes are only known
+       * at the end, so the header (whose length the number of values
+       * fixes) is written as a placeholder and overwritten then, as VTK's
+       * own writer does: the stream must be seekable (a file).
+       *
+       * An array is one block, as deal.II writes it (and as the tests' and
+       * contrib/ readers expect), unless it is larger than max_block_bytes
+       * (the UInt32 header's limit, where deal.II stops): then blocks of
+       * max_block_bytes, which VTK reads just as well.
+       */
+      class CompressedArrayWriter
+      {
+      public:
+        static constexpr std::size_t chunk_bytes     = 1 << 16;
+        static constexpr std::size_t max_block_bytes = std::size_t(1) << 31;
+        static_assert(max_block_bytes % chunk_bytes == 0,
+                      "block boundaries must fall on chunk boundaries");
+
+        explicit CompressedArrayWriter(const int level)
+          : chunk(chunk_bytes)
+          , compressed(chunk_bytes)
+          , text(4 * (chunk_bytes / 3 + 2))
+        {
+          stream.zalloc = Z_NULL;
+          stream.zfree  = Z_NULL;
+          stream.opaque = Z_NULL;
+          AssertThrow(deflateInit(&stream, level) == Z_OK,
+                      ExcMessage("psmpm: zlib could not be initialised."));
+        }
+
+        ~CompressedArrayWriter()
+        {
+          deflateEnd(&stream);
+        }
+
+        CompressedArrayWriter(const CompressedArrayWriter &) = delete;
+        CompressedArrayWriter &
+        operator=(const CompressedArrayWriter &) = delete;
+
+        /// Start an array of @p n_bytes bytes on @p out (nothing is
+        /// written for an empty array, as by deal.II).
+        void
+        begin(std::ostream &out, const std::size_t n_bytes)
+        {
+          this->out   = &out;
+          total_bytes = n_bytes;
+          block_bytes = std::min(n_bytes, max_block_bytes);
+          n_blocks    = n_bytes == 0 ?
+                          0 :
+                          (n_bytes + max_block_bytes - 1) / max_block_bytes;
+          compressed_sizes.clear();
+          AssertThrow(deflateReset(&stream) == Z_OK, ExcInternalError());
+          n_chunk = n_block = n_pushed = block_compressed = 0;
+          n_carry                                         = 0;
+          if (n_blocks == 0)
+            return;
+          header_position = out.tellp();
+          AssertThrow(header_position != std::streampos(-1),
+                      ExcMessage("psmpm: VTU output needs a seekable file."));
+          const std::string placeholder(base64_length(header_bytes()), 'A');
+          out << placeholder;
+        }
+
+        template <typename T>
+        void
+        push(const T value)
+        {
+          static_assert(chunk_bytes % sizeof(T) == 0,
+                        "values must not straddle chunks");
+          std::memcpy(chunk.data() + n_chunk, &value, sizeof(T));
+          n_chunk += sizeof(T);
+          if (n_chunk == chunk_bytes)
+            flush_chunk();
+        }
+
+        /// Compress what is left, then write the header in its place.
+        void
+        end()
+        {
+          AssertThrow(n_pushed + n_chunk == total_bytes, ExcInternalError());
+          if (n_blocks == 0)
+            return;
+          if (n_chunk > 0 || compressed_sizes.size() < n_blocks)
+            {
+              n_block += n_chunk;
+              deflate_chunk(Z_FINISH);
+              compressed_sizes.push_back(block_compressed);
+            }
+          AssertThrow(compressed_sizes.size() == n_blocks, ExcInternalError());
+          if (n_carry > 0)
+            {
+              write_base64(carry, n_carry, true);
+              n_carry = 0;
+            }
+
+          std::vector<std::uint32_t> header = {
+            static_cast<std::uint32_t>(n_blocks),
+            static_cast<std::uint32_t>(block_bytes),
+            static_cast<std::uint32_t>(
+              n_blocks == 1 ? total_bytes : total_bytes % max_block_bytes)};
+          for (const std::size_t s : compressed_sizes)
+            {
+              AssertThrow(s <= std::numeric_limits<std::uint32_t>::max(),
+                          ExcInternalError());
+              header.push_back(static_cast<std::uint32_t>(s));
+            }
+          const std::streampos end_position = out->tellp();
+          out->seekp(header_position);
+          write_base64(reinterpret_cast<const unsigned char *>(header.data()),
+                       header_bytes(),
+                       true);
+          out->seekp(end_position);
+        }
+
+      private:
+        std::size_t
+        header_bytes() const
+        {
+          return (3 + n_blocks) * sizeof(std::uint32_t);
+        }
+
+        static std::size_t
+        base64_length(const std::size_t n)
+        {
+          return 4 * ((n + 2) / 3);
+        }
+
+        void
+        flush_chunk()
+        {
+          n_block += n_chunk;
+          n_pushed += n_chunk;
+          const bool block_full = (n_block == max_block_bytes);
+          deflate_chunk(block_full ? Z_FINISH : Z_NO_FLUSH);
+          n_chunk = 0;
+          if (block_full)
+            {
+              compressed_sizes.push_back(block_compressed);
+              block_compressed = 0;
+              n_block          = 0;
+              AssertThrow(deflateReset(&stream) == Z_OK, ExcInternalError());
+            }
+        }
+
+        /// Feed the chunk to zlib and its output to base64.
+        void
+        deflate_chunk(const int flush)
+        {
+          stream.next_in  = chunk.data();
+          stream.avail_in = static_cast<uInt>(n_chunk);
+          for (;;)
+            {
+              stream.next_out  = compressed.data();
+              stream.avail_out = static_cast<uInt>(compressed.size());
+              const int result = deflate(&stream, flush);
+              // Z_BUF_ERROR: no progress possible, which with output space
+              // left is only harmless without Z_FINISH.
+              AssertThrow(result == Z_OK || result == Z_STREAM_END ||
+                            (result == Z_BUF_ERROR && flush != Z_FINISH),
+                          ExcMessage("psmpm: zlib compression failed."));
+              const std::size_t produced = compressed.size() - stream.avail_out;
+              block_compressed += produced;
+              encode(compressed.data(), produced);
+              if (flush == Z_FINISH ? result == Z_STREAM_END :
+                                      stream.avail_out != 0)
+                break;
+            }
+        }
+
+        /// Append @p n bytes to the base64 stream; up to two bytes wait in
+        /// carry for the next call (or end()).
+        void
+        encode(const unsigned char *data, std::size_t n)
+        {
+          while (n_carry > 0 && n_carry < 3 && n > 0)
+            {
+              carry[n_carry++] = *data++;
+              --n;
+            }
+          if (n_carry == 3)
+            {
+              write_base64(carry, 3, false);
+              n_carry = 0;
+            }
+          const std::size_t whole = n - n % 3;
+          write_base64(data, whole, false);
+          for (std::size_t k = whole; k < n; ++k)
+            carry[n_carry++] = data[k];
+        }
+
+        /// Base64 of @p n bytes (a multiple of 3 unless @p last) to out.
+        void
+        write_base64(const unsigned char *data,
+                     const std::size_t    n,
+                     const bool           last)
+        {
+          static const char table[] =
+            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+          std::size_t done = 0;
+          while (done < n)
+            {
+              // At most text.size() characters per write.
+              const std::size_t n_bytes =
+                std::min(n - done, (text.size() / 4) * 3);
+              std::size_t          length = 0;
+              const unsigned char *d      = data + done;
+              std::size_t          k      = 0;
+              for (; k + 3 <= n_bytes; k += 3)
+                {
+                  const std::uint32_t v = (std::uint32_t(d[k]) << 16) |
+                                          (std::uint32_t(d[k + 1]) << 8) |
+                                          d[k + 2];
+                  text[length++] = table[(v >> 18) & 63];
+                  text[length++] = table[(v >> 12) & 63];
+                  text[length++] = table[(v >> 6) & 63];
+                  text[length++] = table[v & 63];
+                }
+              if (k < n_bytes)
+                {
+                  // Padding ends a base64 stream.
+                  AssertThrow(last, ExcInternalError());
+                  const std::uint32_t v =
+                    (std::uint32_t(d[k]) << 16) |
+                    (k + 1 < n_bytes ? std::uint32_t(d[k + 1]) << 8 : 0);
+                  text[length++] = table[(v >> 18) & 63];
+                  text[length++] = table[(v >> 12) & 63];
+                  text[length++] = k + 1 < n_bytes ? table[(v >> 6) & 63] : '=';
+                  text[length++] = '=';
+                }
+              out->write(text.data(), length);
+              done += n_bytes;
+            }
+        }
+
+        z_stream                   stream;
+        std::vector<unsigned char> chunk;
+        std::vector<unsigned char> compressed;
+        std::vector<char>          text;
+        std::ostream              *out = nullptr;
+        std::streampos             header_position;
+        std::size_t                total_bytes = 0;
+        std::size_t                block_bytes = 0;
+        std::size_t                n_blocks    = 0;
+        std::vector<std::size_t>   compressed_sizes;
+        std::size_t                n_chunk          = 0;
+        std::size_t                n_block          = 0;
+        std::size_t                n_pushed         = 0;
+        std::size_t                block_compressed = 0;
+        unsigned char              carry[3];
+        std::size_t                n_carry = 0;
+      };
+
+
+
+      /**
+       * The VTU piece of @p n points, each a VTK_VERTEX cell, at
+       * @p position(i) (a Point<dim>), with the point data @p names /
+       * @p ranges, component k of point i being @p value(i, k): the file
+       * DataOutBase::write_vtu() writes for one Patch<0, dim> per point
+       * (its header and footer, the same arrays in the same order, Float32
+       * values, vectors padded to 3 and tensors to 3 x 3 components, row
+       * by row), written array by array straight from the values.
+       */
+      template <int dim, typename Position, typename Value>
+      void
+      write_point_vtu(std::ostream                   &out,
+                      const std::size_t               n,
+                      const std::vector<std::string> &names,
+                      const Ranges                   &ranges,
+                      const Position                 &position,
+                      const Value                    &value)
+      {
+        AssertThrow(n < std::size_t(std::numeric_limits<std::int32_t>::max()),
+                    ExcMessage("psmpm: too many particles for one VTU piece "
+                               "(Int32 connectivity)."));
+        const DataOutBase::VtkFlags flags = vtk_flags();
+        CompressedArrayWriter       writer(Z_BEST_SPEED); // as best_speed
+        // One array: the opening tag with @p attributes, then the n x
+        // n_components values of component(i, c) as T.
+        const auto array = [&](const std::string &attributes,
+                               const unsigned int n_components,
+                               const auto         component,
+                               const auto         as_type) {
+          using T = decltype(as_type);
+          out << "    <DataArray " << attributes << " format=\"binary\">\n";
+          writer.begin(out, n * n_components * sizeof(T));
+          for (std::size_t i = 0; i < n; ++i)
+            for (unsigned int c = 0; c < n_components; ++c)
+              writer.push(static_cast<T>(component(i, c)));
+          writer.end();
+          out << "\n    </DataArray>\n";
+        };
+
+        DataOutBase::write_vtu_header(out, flags);
+        out << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n
+            << "\" >\n";
+        out << "  <Points>\n";
+        array(
+          "type=\"Float32\" NumberOfComponents=\"3\"",
+          3,
+          [&](const std::size_t i, const unsigned int c) {
+            return c < dim ? position(i)[c] : 0.;
+          },
+          float());
+        out << "  </Points>\n\n";
+        out << "  <Cells>\n";
+        array(
+          "type=\"Int32\" Name=\"connectivity\"",
+          1,
+          [](const std::size_t i, unsigned int) { return i; },
+          std::int32_t());
+        array(
+          "type=\"Int32\" Name=\"offsets\"",
+          1,
+          [](const std::size_t i, unsigned int) { return i + 1; },
+          std::int32_t());
+        // VTK_VERTEX
+        array(
+          "type=\"UInt8\" Name=\"types\"",
+          1,
+          [](std::size_t, unsigned int) { return 1; },
+          std::uint8_t());
+        out << "  </Cells>\n";
+
+        // As deal.II: the vectors and tensors, then the other scalars.
+        out << "  <PointData Scalars=\"scalars\">\n";
+        std::vector<bool> written(names.size(), false);
+        for (const auto &range : ranges)
+          {
+            const unsigned int first = std::get<0>(range);
+            const unsigned int last  = std::get<1>(range);
+            const bool         is_tensor =
+              std::get<3>(range) ==
+              DataComponentInterpretation::component_is_part_of_tensor;
+            // source[c]: the component at VTK position c, or none (0).
+            std::array<unsigned int, 9> source;
+            source.fill(numbers::invalid_unsigned_int);
+            const unsigned int size = last - first + 1;
+            AssertThrow(is_tensor ? (size == 1 || size == 4) : size <= 3,
+                        ExcInternalError());
+            for (unsigned int c = 0; c < size; ++c)
+              {
+                written[first + c] = true;
+                if (!is_tensor)
+                  source[c] = first + c;
+                else if (size == 1)
+                  source[0] = first;
+                else
+                  {
+                    const auto ind =
+                      Tensor<2, 2>::unrolled_to_component_indices(c);
+                    source[3 * ind[0] + ind[1]] = first + c;
+                  }
+              }
+            const std::string &name = std::get<2>(range);
+            AssertThrow(!name.empty(), ExcInternalError());
+            array(
+              "type=\"Float32\" Name=\"" + name + "\" NumberOfComponents=\"" +
+                std::to_string(is_tensor ? 9 : 3) + "\"",
+              is_tensor ? 9 : 3,
+              [&](const std::size_t i, const unsigned int c) {
+                return source[c] == numbers::invalid_unsigned_int ?
+                         0. :
+                         value(i, source[c]);
+              },
+              float());
+          }
+        for (unsigned int k = 0; k < names.size(); ++k)
+          if (!written[k])
+            array(
+              "type=\"Float32\" Name=\"" + names[k] + "\"",
+              1,
+              [&](const std::size_t i, unsigned int) { return value(i, k); },
+              float());
+        out << "  </PointData>\n";
+        out << " </Piece>\n";
+        DataOutBase::write_vtu_footer(out);
+        out << std::flush;
+      }
+
+
 
       /**
        * The sampling points of one cell in real coordinates: in 1D the
@@ -373,57 +790,84 @@ namespace psmpm
       std::vector<unsigned int> source;
       state_layout<dim>(particles.get_state_names(), names, ranges, source);
       const double rank = Utilities::MPI::this_mpi_process(comm);
-      std::vector<DataOutBase::Patch<0, dim>> patches(particles.size());
-      for (std::size_t i = 0; i < particles.size(); ++i)
-        {
-          auto &patch       = patches[i];
-          patch.vertices[0] = particles.position[i];
-          patch.patch_index = i;
-          patch.data.reinit(names.size(), 1);
-          // VTU stores Float32: ids above 2^24 lose their last digits,
-          // which is acceptable for picking particles in ParaView.
-          patch.data(0, 0) = particles.id[i];
-          patch.data(1, 0) = particles.cell[i];
-          patch.data(2, 0) = rank;
-          patch.data(3, 0) = particles.mass[i];
-          patch.data(4, 0) = particles.volume[i];
-          patch.data(5, 0) = particles.density[i];
-          if (with_bodies)
-            {
-              patch.data(6, 0) = particles.body_id[i];
-              patch.data(7, 0) = particles.body_material[particles.body_id[i]];
-            }
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              patch.data(first_displacement + d, 0) =
-                particles.displacement[i][d];
-              patch.data(first_velocity + d, 0) = particles.velocity[i][d];
-            }
-          for (unsigned int c = 0; c < dim * dim; ++c)
-            {
-              const auto ind = Tensor<2, dim>::unrolled_to_component_indices(c);
-              patch.data(first_stress + c, 0) =
-                particles.stress[i][ind[0]][ind[1]];
-            }
-          const double *state = particles.state_of(i);
-          for (unsigned int k = 0; k < source.size(); ++k)
-            patch.data(first_state + k, 0) = state[source[k]];
-        }
+      std::array<TableIndices<2>, dim * dim> stress_index;
+      for (unsigned int c = 0; c < dim * dim; ++c)
+        stress_index[c] = Tensor<2, dim>::unrolled_to_component_indices(c);
+      // Output component k of particle i, in the order of names. VTU
+      // stores Float32: ids above 2^24 lose their last digits, which is
+      // acceptable for picking particles in ParaView.
+      const auto value = [&](const std::size_t  i,
+                             const unsigned int k) -> double {
+        if (k >= first_state)
+          return particles.state_of(i)[source[k - first_state]];
+        if (k >= first_stress)
+          {
+            const TableIndices<2> &ind = stress_index[k - first_stress];
+            return particles.stress[i][ind[0]][ind[1]];
+          }
+        if (k >= first_velocity)
+          return particles.velocity[i][k - first_velocity];
+        if (k >= first_displacement)
+          return particles.displacement[i][k - first_displacement];
+        switch (k)
+          {
+            case 0:
+              return static_cast<double>(particles.id[i]);
+            case 1:
+              return particles.cell[i];
+            case 2:
+              return rank;
+            case 3:
+              return particles.mass[i];
+            case 4:
+              return particles.volume[i];
+            case 5:
+              return particles.density[i];
+            case 6:
+              return particles.body_id[i];
+            default:
+              return particles.body_material[particles.body_id[i]];
+          }
+      };
 
       if constexpr (dim >= 2)
         if (hdf5)
           {
+            std::vector<DataOutBase::Patch<0, dim>> patches(particles.size());
+            for (std::size_t i = 0; i < particles.size(); ++i)
+              {
+                auto &patch       = patches[i];
+                patch.vertices[0] = particles.position[i];
+                patch.patch_index = i;
+                patch.data.reinit(names.size(), 1);
+                for (unsigned int k = 0; k < names.size(); ++k)
+                  patch.data(k, 0) = value(i, k);
+              }
             hdf5->write(step, time, names, ranges, patches);
             return;
           }
-      particle_records.emplace_back(time,
-                                    write_pieces(directory,
-                                                 "particles",
-                                                 step,
-                                                 names,
-                                                 ranges,
-                                                 patches,
-                                                 comm));
+      // Straight from the particle arrays, not through one deal.II Patch
+      // per particle (see write_point_vtu()).
+      particle_records.emplace_back(
+        time,
+        write_pieces(
+          directory,
+          "particles",
+          step,
+          names,
+          ranges,
+          [&](std::ostream &out) {
+            write_point_vtu<dim>(
+              out,
+              particles.size(),
+              names,
+              ranges,
+              [&](const std::size_t i) -> const Point<dim> & {
+                return particles.position[i];
+              },
+              value);
+          },
+          comm));
       write_pvd("particles", particle_records);
     }
 
@@ -593,7 +1037,16 @@ namespace psmpm
 
       grid_records.emplace_back(
         time,
-        write_pieces(directory, "grid", step, names, ranges, patches, comm));
+        write_pieces(
+          directory,
+          "grid",
+          step,
+          names,
+          ranges,
+          [&](std::ostream &out) {
+            DataOutBase::write_vtu(patches, names, ranges, vtk_flags(), out);
+          },
+          comm));
       write_pvd("grid", grid_records);
     }
 
