@@ -61,6 +61,16 @@ TLS_CASES = [
      [TLS, "Transfer/Taylor least squares/Fields=stress and momentum"]),
     ("TLS-BSMPM consistent (chapter)", "bspline", "consistent",
      [TLS, "Transfer/Taylor least squares/Fields=stress and momentum"]),
+    ("TLS-BSMPM consistent, lumped acceleration (chapter exact)", "bspline",
+     "consistent",
+     [TLS, "Transfer/Taylor least squares/Fields=stress and momentum",
+      "Transfer/Taylor least squares/Acceleration mass=lumped"]),
+    ("TLS-BSMPM consistent, centred momentum", "bspline", "consistent",
+     [TLS, "Transfer/Taylor least squares/Fields=stress and centred momentum"]),
+    ("TLS-BSMPM consistent, centred momentum, lumped acceleration", "bspline",
+     "consistent",
+     [TLS, "Transfer/Taylor least squares/Fields=stress and centred momentum",
+      "Transfer/Taylor least squares/Acceleration mass=lumped"]),
     ("TLS-BSMPM consistent, stress", "bspline", "consistent",
      [TLS, "Transfer/Taylor least squares/Fields=stress"])]
 

@@ -30,6 +30,34 @@ namespace psmpm
       prm.leave_subsection();
     }
 
+    namespace
+    {
+      template <int dim>
+      bool
+      solve_reported(State<dim>                  &state,
+                     std::vector<Tensor<1, dim>> &solution,
+                     StabilityMonitor            &monitor,
+                     PhaseTimer                  &timer,
+                     const bool                   lumped)
+      {
+        try
+          {
+            PhaseTimer::Scope t(timer, "solve");
+            state.grid->solve(solution, lumped);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            monitor.report(Failure::solver,
+                           "mass matrix solver did not converge (" +
+                             std::to_string(e.last_step) +
+                             " iterations, residual " +
+                             prm_value(e.last_residual) + ")");
+            return false;
+          }
+        return true;
+      }
+    } // namespace
+
     template <int dim>
     bool
     TransferScheme<dim>::solve(State<dim>                  &state,
@@ -37,21 +65,22 @@ namespace psmpm
                                StabilityMonitor            &monitor,
                                PhaseTimer                  &timer)
     {
-      try
-        {
-          PhaseTimer::Scope t(timer, "solve");
-          state.grid->solve(solution);
-        }
-      catch (const SolverControl::NoConvergence &e)
-        {
-          monitor.report(Failure::solver,
-                         "mass matrix solver did not converge (" +
-                           std::to_string(e.last_step) +
-                           " iterations, residual " +
-                           prm_value(e.last_residual) + ")");
-          return false;
-        }
-      return true;
+      return solve_reported(state, solution, monitor, timer, false);
+    }
+
+    template <int dim>
+    bool
+    TransferScheme<dim>::solve_acceleration(State<dim>       &state,
+                                            StabilityMonitor &monitor,
+                                            PhaseTimer       &timer)
+    {
+      const bool lumped =
+        state.reconstruction && state.reconstruction->lumped_acceleration();
+      return solve_reported(state,
+                            state.grid_acceleration,
+                            monitor,
+                            timer,
+                            lumped);
     }
 
     template <int dim>

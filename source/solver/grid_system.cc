@@ -862,14 +862,15 @@ namespace psmpm
 
     template <int dim>
     void
-    GridSystem<dim>::solve(std::vector<Tensor<1, dim>> &solution)
+    GridSystem<dim>::solve(std::vector<Tensor<1, dim>> &solution,
+                           const bool                   lumped_only)
     {
       solution.resize(relevant_global.size());
       TrilinosWrappers::MPI::Vector &x     = solution_vector;
       std::vector<double>           &local = local_solution;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          if (uses_matrix())
+          if (uses_matrix() && !lumped_only)
             stats.iterations += solve_consistent(d, x);
           else
             {

@@ -69,6 +69,16 @@ namespace psmpm
       virtual bool
       fits_momentum() const = 0;
 
+      /// Whether the acceleration (M^{-1} f) takes the lumped mass of
+      /// mass_and_forces() whatever the mass strategy, the consistent
+      /// matrix then serving the velocity mapping alone (the chapter's
+      /// combination, Wobbes et al. 2019 eqs. 4.8 and 4.44).
+      virtual bool
+      lumped_acceleration() const
+      {
+        return false;
+      }
+
       /// The per-cell right-hand sides p_i of the particles' current
       /// momentum (zeroed by the caller), if fits_momentum(); may assemble
       /// a mass matrix of its own for the velocity.

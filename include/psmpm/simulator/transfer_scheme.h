@@ -110,6 +110,14 @@ namespace psmpm
             StabilityMonitor            &monitor,
             PhaseTimer                  &timer);
 
+      /// The grid acceleration M^{-1} f: as solve(), with the lumped mass
+      /// if the reconstruction asks for it
+      /// (Reconstruction::lumped_acceleration()).
+      static bool
+      solve_acceleration(State<dim>       &state,
+                         StabilityMonitor &monitor,
+                         PhaseTimer       &timer);
+
       /// Particle mass into the cell matrices (lumped and, for matrix
       /// strategies, consistent; then the strategy: assemble_mass) and the
       /// cell right-hand sides momentum_weight sum_p m_p v_p N_i +

@@ -139,8 +139,12 @@ namespace psmpm
 
       /// Solve M x_d = b_d for every component d with b from the cell
       /// right-hand sides; result in @p solution (local relevant numbering).
+      /// With @p lumped, M is the lumped mass (the row sums of the cell
+      /// arrays) whatever the strategy: Taylor least squares' acceleration
+      /// of the chapter (Wobbes et al. 2019, eq. 4.8 with the lumped mass
+      /// of eq. 4.5) beside a consistent velocity mapping.
       void
-      solve(std::vector<Tensor<1, dim>> &solution);
+      solve(std::vector<Tensor<1, dim>> &solution, const bool lumped = false);
 
       const MassStrategy<dim> &
       strategy() const

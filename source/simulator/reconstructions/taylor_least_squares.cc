@@ -40,6 +40,12 @@ namespace psmpm
        * for the Taylor basis, grid mass and momentum equal the
        * particles'. The stress is fitted with all coefficients (eq. 4.36).
        *
+       * Fields = stress and centred momentum replaces the chapter's
+       * velocity mapping by one that is exact for linear velocity fields
+       * (see centred_momentum()); Acceleration mass = lumped takes the
+       * chapter's lumped particle mass for the acceleration (eqs. 4.5,
+       * 4.8) beside the consistent mass of the velocity mapping.
+       *
        * Interior cells only: a cell takes the fit if it holds at least
        * twice as many particles as there are Taylor functions and every
        * cell that shares a vertex with it holds particles. A cell at a free
@@ -63,7 +69,13 @@ namespace psmpm
         explicit TaylorLeastSquares(ParameterHandler &prm)
         {
           prm.enter_subsection("Taylor least squares");
-          fit_momentum = prm.get("Fields") == "stress and momentum";
+          const std::string fields = prm.get("Fields");
+          mapping                  = fields == "stress and momentum" ?
+                                       VelocityMapping::chapter :
+                                     fields == "stress and centred momentum" ?
+                                       VelocityMapping::centred :
+                                       VelocityMapping::particles;
+          lumped_accel             = prm.get("Acceleration mass") == "lumped";
           prm.leave_subsection();
         }
 
@@ -74,7 +86,8 @@ namespace psmpm
           prm.declare_entry(
             "Fields",
             "stress",
-            Patterns::Selection("stress|stress and momentum"),
+            Patterns::Selection(
+              "stress|stress and momentum|stress and centred momentum"),
             "stress: the internal force from the fitted stress (eqs. "
             "4.36-4.38), mass and momentum mapped by the particles; stress "
             "and momentum: also the velocity mapping of MUSL/USL from "
@@ -83,7 +96,22 @@ namespace psmpm
             "particle momentum at the cell's centroid: first-order wrong "
             "where the particles' centroid is not the cell's (a particle "
             "that just crossed in; lattice particles in triangles), "
-            "measured in doc/chapter.md.");
+            "measured in doc/chapter.md; stress and centred momentum: the "
+            "velocity mapping from a linear density with the particles' "
+            "mass and mass centre and a quadratic velocity fit whose "
+            "density-weighted integral is the cell's particle momentum: as "
+            "conservative, and exact for linear velocity fields (a cell "
+            "whose density would not stay positive keeps its particles).");
+          prm.declare_entry(
+            "Acceleration mass",
+            "mass matrix",
+            Patterns::Selection("mass matrix|lumped"),
+            "mass matrix: the acceleration M^{-1} f with the mass matrix "
+            "of Mass matrix/Type; lumped: with the particles' lumped mass "
+            "(eqs. 4.5 and 4.8) whatever Mass matrix/Type is, which then "
+            "serves the velocity mapping alone. Fields = stress and "
+            "momentum, Mass matrix/Type = consistent and lumped is the "
+            "chapter's TLS-BSMPM: two mass matrices per step.");
           prm.leave_subsection();
         }
 
@@ -105,7 +133,13 @@ namespace psmpm
         bool
         fits_momentum() const override
         {
-          return fit_momentum;
+          return mapping != VelocityMapping::particles;
+        }
+
+        bool
+        lumped_acceleration() const override
+        {
+          return lumped_accel;
         }
 
         void
@@ -182,6 +216,46 @@ namespace psmpm
         void
         mark_interior_cells(const State<dim> &state);
 
+        /// The chapter's velocity mapping of an interior cell (eqs.
+        /// 4.39-4.43) into its arrays (@p mass: its consistent block, or
+        /// nullptr).
+        void
+        chapter_momentum(State<dim>        &state,
+                         const unsigned int cell,
+                         Fit               &fit,
+                         double            *mass);
+
+        /// The centred velocity mapping of an interior cell (see the
+        /// definition); false, with nothing added, if its density would
+        /// not be positive at every point of the rule.
+        bool
+        centred_momentum(State<dim>        &state,
+                         const unsigned int cell,
+                         Fit               &fit,
+                         double            *mass);
+
+        /// The velocity fit of centred_momentum(): @p v holds the right-
+        /// hand sides sum_p psi_k(x_p) v_p of the fit's normal equations
+        /// (constant at fit.n_used) and returns the coefficients of the
+        /// least squares fit under int rho~ v~ = @p momentum, with rho~
+        /// given at the rule's points of @p cell by @p density.
+        void
+        fit_velocity(const unsigned int    cell,
+                     const Fit            &fit,
+                     const double         *density,
+                     const Tensor<1, dim> &momentum,
+                     Tensor<1, dim>       *v) const;
+
+        /// Coefficients of the linear density of centred_momentum() in
+        /// @p cell: r[j] of linear function j, r[dim] the constant, from
+        /// the cell's particle mass and first moments @p first[j] =
+        /// sum_p m_p psi_j(x_p).
+        void
+        density_coefficients(const unsigned int cell,
+                             const double       cell_mass,
+                             const double      *first,
+                             double            *r) const;
+
         /// Per active cell: the affine map to the reference coordinates
         /// of the Taylor basis, xi = A (x - origin) (1D: xi in [-1, 1];
         /// 2D: the barycentric coordinates l1, l2), and the measure.
@@ -206,13 +280,23 @@ namespace psmpm
         std::vector<unsigned int> occupied;
         std::vector<bool>         interior;
 
-        /// Fields = stress and momentum.
-        bool fit_momentum = false;
+        /// The velocity mapping (entry Fields): the particles', the
+        /// chapter's (stress and momentum), or centred_momentum().
+        enum class VelocityMapping
+        {
+          particles,
+          chapter,
+          centred
+        };
+        VelocityMapping mapping = VelocityMapping::particles;
+        /// Acceleration mass = lumped.
+        bool lumped_accel = false;
 
         /// Particles by cell: order[offsets[c] .. offsets[c + 1]).
         std::vector<unsigned int> offsets, order;
-        /// Taylor functions at the particles of the cell being fitted.
-        std::vector<double> scratch_psi;
+        /// Taylor functions at the particles of the cell being fitted;
+        /// density at the rule's points of that cell.
+        std::vector<double> scratch_psi, scratch_density;
       };
 
 
@@ -610,74 +694,261 @@ namespace psmpm
         // of the acceleration.
         auto &grid = *state.grid;
         grid.zero_cell_mass();
-        const auto        &particles  = state.particles;
-        auto              &cells      = grid.cell_arrays();
-        const bool         consistent = !cells.mass.empty();
-        const unsigned int n          = n_dofs;
-        Fit                fit;
+        auto      &cells      = grid.cell_arrays();
+        const bool consistent = !cells.mass.empty();
+        Fit        fit;
         for (unsigned int c = 0; c + 1 < offsets.size(); ++c)
           {
-            const unsigned int begin = offsets[c], end = offsets[c + 1];
-            if (begin == end)
+            if (offsets[c + 1] == offsets[c])
               continue;
-            const unsigned int base = c * n;
-            double *const mass = consistent ? &cells.mass[base * n] : nullptr;
-            if (!interior[c])
-              {
-                add_particles(state, c, 1., 0., 0., mass);
-                continue;
-              }
-            factorize(state, c, fit);
-            const unsigned int k            = fit.n_used;
-            double             rho[n_max]   = {};
-            Tensor<1, dim>     rho_v[n_max] = {};
-            double             cell_mass    = 0;
-            Tensor<1, dim>     cell_momentum;
-            for (unsigned int i = begin; i < end; ++i)
-              {
-                const unsigned int   p   = order[i];
-                const double        *psi = &scratch_psi[(i - begin) * n_max];
-                const double         d   = particles.density[p];
-                const Tensor<1, dim> dv  = d * particles.velocity[p];
-                for (unsigned int r = 0; r < k; ++r)
-                  {
-                    rho[r] += psi[r] * d;
-                    rho_v[r] += psi[r] * dv;
-                  }
-                cell_mass += particles.mass[p];
-                cell_momentum += particles.mass[p] * particles.velocity[p];
-              }
-            // Eqs. 4.39-4.40: the cell's mass and momentum fix the
-            // constant coefficients.
-            const double         rho_0   = cell_mass / measure[c];
-            const Tensor<1, dim> rho_v_0 = cell_momentum / measure[c];
-            solve_constrained(fit, rho, rho_0);
-            solve_constrained(fit, rho_v, rho_v_0);
-            for (unsigned int q = 0; q < n_q; ++q)
-              {
-                const unsigned int g   = c * n_q + q;
-                const double      *psi = &q_psi[g * n_max];
-                double             d   = rho_0;
-                Tensor<1, dim>     dv  = rho_v_0;
-                for (unsigned int r = 0; r < k; ++r)
-                  {
-                    d += rho[r] * psi[r];
-                    dv += rho_v[r] * psi[r];
-                  }
-                const double w = weights[g];
-                add_point<dim>(n,
-                               d * w,
-                               w * dv,
-                               0.,
-                               SymmetricTensor<2, dim>(),
-                               &q_values[g * n],
-                               &q_gradients[g * n],
-                               &cells.lumped[base],
-                               mass,
-                               &cells.rhs[base]);
-              }
+            double *const mass =
+              consistent ? &cells.mass[c * n_dofs * n_dofs] : nullptr;
+            if (interior[c] && mapping == VelocityMapping::chapter)
+              chapter_momentum(state, c, fit, mass);
+            else if (!interior[c] || !centred_momentum(state, c, fit, mass))
+              add_particles(state, c, 1., 0., 0., mass);
           }
         grid.assemble_mass();
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::chapter_momentum(State<dim>        &state,
+                                                const unsigned int c,
+                                                Fit               &fit,
+                                                double            *mass)
+      {
+        const auto        &particles = state.particles;
+        auto              &cells     = state.grid->cell_arrays();
+        const unsigned int n = n_dofs, base = c * n;
+        const unsigned int begin = offsets[c], end = offsets[c + 1];
+        factorize(state, c, fit);
+        const unsigned int k            = fit.n_used;
+        double             rho[n_max]   = {};
+        Tensor<1, dim>     rho_v[n_max] = {};
+        double             cell_mass    = 0;
+        Tensor<1, dim>     cell_momentum;
+        for (unsigned int i = begin; i < end; ++i)
+          {
+            const unsigned int   p   = order[i];
+            const double        *psi = &scratch_psi[(i - begin) * n_max];
+            const double         d   = particles.density[p];
+            const Tensor<1, dim> dv  = d * particles.velocity[p];
+            for (unsigned int r = 0; r < k; ++r)
+              {
+                rho[r] += psi[r] * d;
+                rho_v[r] += psi[r] * dv;
+              }
+            cell_mass += particles.mass[p];
+            cell_momentum += particles.mass[p] * particles.velocity[p];
+          }
+        // Eqs. 4.39-4.40: the cell's mass and momentum fix the constant
+        // coefficients.
+        const double         rho_0   = cell_mass / measure[c];
+        const Tensor<1, dim> rho_v_0 = cell_momentum / measure[c];
+        solve_constrained(fit, rho, rho_0);
+        solve_constrained(fit, rho_v, rho_v_0);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int g   = c * n_q + q;
+            const double      *psi = &q_psi[g * n_max];
+            double             d   = rho_0;
+            Tensor<1, dim>     dv  = rho_v_0;
+            for (unsigned int r = 0; r < k; ++r)
+              {
+                d += rho[r] * psi[r];
+                dv += rho_v[r] * psi[r];
+              }
+            const double w = weights[g];
+            add_point<dim>(n,
+                           d * w,
+                           w * dv,
+                           0.,
+                           SymmetricTensor<2, dim>(),
+                           &q_values[g * n],
+                           &q_gradients[g * n],
+                           &cells.lumped[base],
+                           mass,
+                           &cells.rhs[base]);
+          }
+      }
+
+
+      /*
+       * Why the chapter's mapping is first order, and what this one keeps.
+       * The grid velocity solves  int rho~ v_h phi_i = int (rho v)~ phi_i.
+       * For a linear velocity field v (which the spline space holds) v_h
+       * = v exactly if (rho v)~ = rho~ v. The chapter fits rho~ and
+       * (rho v)~ separately with their means fixed to M_e / |cell| and
+       * P_e / |cell|: for linear v, P_e = M_e v(x_m) at the particles'
+       * mass centre x_m, while the mean of rho~ v is M_e v(x_rho) at the
+       * centre x_rho of the fitted density, near the cell's centroid when
+       * the particle densities are even. A particle that has just crossed
+       * in moves x_m by about h / 18 (9 particles where 8 fit): an error
+       * v' (x_m - x_rho) in every affected cell, first order in h.
+       *
+       * Here instead:
+       *  1. rho~ = r_0 + sum_j r_j psi_j over the linear Taylor functions
+       *     with int rho~ = M_e (r_0 = M_e / |cell|, as eq. 4.39) and
+       *     int rho~ psi_j = sum_p m_p psi_j(x_p): the particles' mass and
+       *     mass centre (a 1x1 or 2x2 system: the linear functions have
+       *     mean zero, so r_0 decouples). For every linear v then
+       *     int rho~ v = sum_p m_p v(x_p).
+       *  2. v~ = the least squares fit of the particle velocities in the
+       *     quadratic Taylor basis (the stress fit's normal equations D)
+       *     under the one constraint w . c = P_e, w_k = int rho~ psi_k:
+       *     c = c_u + lambda D^{-1} w, lambda = (P_e - w . c_u) / (w .
+       *     D^{-1} w).
+       *  3. (rho v)~ = rho~ v~ and M = int rho~ phi phi^T by the cell's
+       *     rule (exact: degree 1 + 2 + p and 1 + 2 p).
+       * Conservation is algebraic: the grid mass of the cell is the rule's
+       * int rho~ = M_e, its momentum sum_g w_g rho~ v~ = w . c = P_e. For
+       * linear particle velocities the unconstrained fit is v itself and
+       * w . c_u = sum_p m_p v(x_p) = P_e by step 1, so lambda = 0 and v_h
+       * = v: the mapping is exact for linear fields (second order), with
+       * the constraint only correcting curvature. A cell whose particles'
+       * mass centre lies so far off-centre that rho~ is not positive at
+       * every point of the rule keeps its particles as quadrature points
+       * (equally conservative and exact for linear fields).
+       */
+      template <int dim>
+      bool
+      TaylorLeastSquares<dim>::centred_momentum(State<dim>        &state,
+                                                const unsigned int c,
+                                                Fit               &fit,
+                                                double            *mass)
+      {
+        const auto        &particles = state.particles;
+        auto              &cells     = state.grid->cell_arrays();
+        const unsigned int n = n_dofs, base = c * n;
+        const unsigned int begin = offsets[c], end = offsets[c + 1];
+        factorize(state, c, fit);
+        const unsigned int k = fit.n_used;
+
+        // 1. Density: mass and mass centre.
+        double         cell_mass = 0, first[dim] = {};
+        Tensor<1, dim> cell_momentum, v_fit[n_max];
+        for (unsigned int i = begin; i < end; ++i)
+          {
+            const unsigned int p   = order[i];
+            const double      *psi = &scratch_psi[(i - begin) * n_max];
+            const double       m   = particles.mass[p];
+            cell_mass += m;
+            cell_momentum += m * particles.velocity[p];
+            for (unsigned int j = 0; j < dim; ++j)
+              first[j] += m * psi[j];
+            for (unsigned int r = 0; r < k; ++r)
+              v_fit[r] += psi[r] * particles.velocity[p];
+            v_fit[k] += particles.velocity[p];
+          }
+        double r[dim + 1];
+        density_coefficients(c, cell_mass, first, r);
+        scratch_density.resize(n_q);
+        double *const density = scratch_density.data();
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const double *psi = &q_psi[(c * n_q + q) * n_max];
+            density[q]        = r[dim];
+            for (unsigned int j = 0; j < dim; ++j)
+              density[q] += r[j] * psi[j];
+            if (!(density[q] > 0))
+              return false;
+          }
+
+        // 2. Velocity: least squares under w . c = P_e.
+        fit_velocity(c, fit, density, cell_momentum, v_fit);
+
+        // 3. rho~ and rho~ v~ at the rule's points.
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int g   = c * n_q + q;
+            const double      *psi = &q_psi[g * n_max];
+            Tensor<1, dim>     v   = v_fit[k];
+            for (unsigned int j = 0; j < k; ++j)
+              v += v_fit[j] * psi[j];
+            const double dw = density[q] * weights[g];
+            add_point<dim>(n,
+                           dw,
+                           dw * v,
+                           0.,
+                           SymmetricTensor<2, dim>(),
+                           &q_values[g * n],
+                           &q_gradients[g * n],
+                           &cells.lumped[base],
+                           mass,
+                           &cells.rhs[base]);
+          }
+        return true;
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::fit_velocity(const unsigned int    c,
+                                            const Fit            &fit,
+                                            const double         *density,
+                                            const Tensor<1, dim> &momentum,
+                                            Tensor<1, dim>       *v) const
+      {
+        // w_k = int rho~ psi_k by the rule: the constraint w . c = P_e is
+        // then what the grid momentum of the cell sums to.
+        const unsigned int k        = fit.n_used;
+        double             w[n_max] = {}, z[n_max];
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int g   = c * n_q + q;
+            const double      *psi = &q_psi[g * n_max];
+            const double       dw  = density[q] * weights[g];
+            for (unsigned int j = 0; j < k; ++j)
+              w[j] += dw * psi[j];
+            w[k] += dw;
+          }
+        std::copy(w, w + k + 1, z);
+        solve_full(fit, v);
+        solve_full(fit, z);
+        Tensor<1, dim> w_c;
+        double         w_z = 0;
+        for (unsigned int j = 0; j <= k; ++j)
+          {
+            w_c += w[j] * v[j];
+            w_z += w[j] * z[j];
+          }
+        // The Lagrange multiplier of the constraint; w . D^-1 w > 0 as D
+        // is positive definite and w_k = M_e > 0.
+        const Tensor<1, dim> lambda = (momentum - w_c) / w_z;
+        for (unsigned int j = 0; j <= k; ++j)
+          v[j] += z[j] * lambda;
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::density_coefficients(const unsigned int c,
+                                                    const double  cell_mass,
+                                                    const double *first,
+                                                    double       *r) const
+      {
+        // G_jl = int psi_j psi_l over the linear functions, by the rule
+        // (exact for it).
+        double G[dim][dim] = {};
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int g   = c * n_q + q;
+            const double      *psi = &q_psi[g * n_max];
+            for (unsigned int j = 0; j < dim; ++j)
+              for (unsigned int l = 0; l < dim; ++l)
+                G[j][l] += weights[g] * psi[j] * psi[l];
+          }
+        r[dim] = cell_mass / measure[c];
+        if constexpr (dim == 1)
+          r[0] = first[0] / G[0][0];
+        else
+          {
+            const double det = G[0][0] * G[1][1] - G[0][1] * G[1][0];
+            r[0]       = (G[1][1] * first[0] - G[0][1] * first[dim - 1]) / det;
+            r[dim - 1] = (G[0][0] * first[dim - 1] - G[1][0] * first[0]) / det;
+          }
       }
     } // namespace
 

@@ -31,7 +31,7 @@ namespace psmpm
              PhaseTimer       &timer) override
         {
           this->particles_to_grid(state, timer, 0., 1.);
-          if (!this->solve(state, state.grid_acceleration, monitor, timer))
+          if (!this->solve_acceleration(state, monitor, timer))
             return false;
           update_particle_velocities(state, timer);
           if (!this->solve(state, state.grid_velocity, monitor, timer))

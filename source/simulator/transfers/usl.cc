@@ -29,7 +29,7 @@ namespace psmpm
              PhaseTimer       &timer) override
         {
           this->particles_to_grid(state, timer, 0., 1.);
-          if (!this->solve(state, state.grid_acceleration, monitor, timer))
+          if (!this->solve_acceleration(state, monitor, timer))
             return false;
           this->momentum_to_grid(state, timer);
           if (!this->solve(state, state.grid_velocity, monitor, timer))
