@@ -181,8 +181,7 @@ namespace psmpm
         CompressedArrayWriter &
         operator=(const CompressedArrayWriter &) = delete;
 
-        /// Start an array of @p n_bytes bytes on @p out (nothing is
-        /// written for an empty array, as by deal.II).
+        /// Start an array of @p n_bytes bytes on @p out.
         void
         begin(std::ostream &out, const std::size_t n_bytes)
         {
@@ -197,7 +196,12 @@ namespace psmpm
           n_chunk = n_block = n_pushed = block_compressed = 0;
           n_carry                                         = 0;
           if (n_blocks == 0)
-            return;
+            {
+              // A rank without particles: a header of zero blocks, which
+              // VTK reads without complaint (an empty element it does not).
+              out << "AAAAAAAAAAAAAAAA";
+              return;
+            }
           header_position = out.tellp();
           AssertThrow(header_position != std::streampos(-1),
                       ExcMessage("psmpm: VTU output needs a seekable file."));
