@@ -15,30 +15,6 @@ namespace psmpm
 {
   namespace Basis
   {
-    namespace
-    {
-      /// Bernstein polynomials of degree p at t and their derivatives in
-      /// t, by de Casteljau's triangle (non-negative terms only).
-      void
-      bernstein(const unsigned int p, const double t, double *b, double *db)
-      {
-        const double s                              = 1 - t;
-        double       lower[BSpline::max_degree + 1] = {};
-        b[0]                                        = 1;
-        for (unsigned int r = 1; r <= p; ++r)
-          {
-            if (r == p)
-              std::copy(b, b + p, lower);
-            b[r] = t * b[r - 1];
-            for (unsigned int j = r - 1; j >= 1; --j)
-              b[j] = s * b[j] + t * b[j - 1];
-            b[0] = s * b[0];
-          }
-        // d/dt B^p_j = p (B^{p-1}_{j-1} - B^{p-1}_j).
-        for (unsigned int j = 0; j <= p; ++j)
-          db[j] = p * ((j >= 1 ? lower[j - 1] : 0.) - (j < p ? lower[j] : 0.));
-      }
-    } // namespace
 
     TensorBSpline::TensorBSpline()
       : p(2)
@@ -55,9 +31,9 @@ namespace psmpm
     void
     TensorBSpline::set_degree(const unsigned int degree)
     {
-      // The univariate space checks the range with the same message.
-      BSpline univariate;
-      univariate.set_degree(degree);
+      // The univariate spaces check the range, naming Basis/Degree.
+      for (auto &u : univariate)
+        u.set_degree(degree);
       if (degree != p)
         {
           p  = degree;
@@ -94,11 +70,17 @@ namespace psmpm
       levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
       AssertThrow(levels.size() == p + 1, ExcInternalError());
       local_lattice.resize(support.size());
+      local_univariate.resize(support.size());
       for (unsigned int k = 0; k < support.size(); ++k)
         for (unsigned int d = 0; d < 2; ++d)
-          local_lattice[k][d] =
-            std::lower_bound(levels.begin(), levels.end(), support[k][d]) -
-            levels.begin();
+          {
+            const unsigned int j =
+              std::lower_bound(levels.begin(), levels.end(), support[k][d]) -
+              levels.begin();
+            local_lattice[k][d] = j;
+            // FE_Q<1>(p): vertex 0, vertex 1, then the interior.
+            local_univariate[k][d] = j == 0 ? 0 : (j == p ? 1 : j + 1);
+          }
 
       // Grid lines: the distinct vertex coordinates (shared vertices are
       // the same points, so exact comparison finds them).
@@ -142,7 +124,7 @@ namespace psmpm
     }
 
     std::vector<TensorBSpline::Tie>
-    TensorBSpline::univariate_ties(const unsigned int d) const
+    TensorBSpline::univariate_ties(const unsigned int d)
     {
       // The univariate space on the grid lines of direction d, cells
       // numbered left to right with vertex 0 on the left.
@@ -155,13 +137,13 @@ namespace psmpm
         cells[k].vertices = {k, k + 1};
       Triangulation<1> line;
       line.create_triangulation(vertices, cells, SubCellData());
-      BSpline univariate;
-      univariate.set_degree(p);
       DoFHandler<1> dof_handler(line);
-      dof_handler.distribute_dofs(univariate.dof_layout());
-      univariate.reinit(dof_handler);
+      dof_handler.distribute_dofs(univariate[d].dof_layout());
+      // The univariate space keeps its cell geometry for evaluate(); its
+      // cell k is the k-th between grid lines.
+      univariate[d].reinit(dof_handler);
       AffineConstraints<double> constraints;
-      univariate.make_space_constraints(dof_handler, constraints);
+      univariate[d].make_space_constraints(dof_handler, constraints);
 
       // Lattice line of every univariate DoF: Bernstein j of cell k is
       // k p + j; FE_Q<1> numbers vertex 0, vertex 1, then the interior.
@@ -171,6 +153,7 @@ namespace psmpm
         {
           cell->get_dof_indices(dofs);
           const unsigned int k = cell->vertex_index(0);
+          AssertThrow(cell->active_cell_index() == k, ExcInternalError());
           for (unsigned int j = 0; j <= p; ++j)
             lattice_of[dofs[j == 0 ? 0 : (j == p ? 1 : j + 1)]] = k * p + j;
         }
@@ -215,21 +198,24 @@ namespace psmpm
     {
       AssertIndexRange(cell, cell_data.size());
       const CellGeometry &data = cell_data[cell];
-      double b[2][BSpline::max_degree + 1], db[2][BSpline::max_degree + 1];
+      // The univariate Bernstein polynomials (and x- or y-derivatives) of
+      // the cell's column and row, in FE_Q<1>(p) order.
+      double       b[2][BSpline::max_degree + 1];
+      Tensor<1, 1> db[2][BSpline::max_degree + 1];
       for (unsigned int d = 0; d < 2; ++d)
-        bernstein(p,
-                  (x[d] - data.origin[d]) * data.inverse_length[d],
-                  b[d],
-                  db[d]);
-      const unsigned int n = local_lattice.size();
+        univariate[d].BSpline::evaluate(data.position[d],
+                                        Point<1>(x[d]),
+                                        b[d],
+                                        gradients != nullptr ? db[d] : nullptr);
+      const unsigned int n = local_univariate.size();
       for (unsigned int k = 0; k < n; ++k)
         {
-          const auto [a, c] = local_lattice[k];
-          values[k]         = b[0][a] * b[1][c];
+          const auto [i, j] = local_univariate[k];
+          values[k]         = b[0][i] * b[1][j];
           if (gradients != nullptr)
             {
-              gradients[k][0] = db[0][a] * data.inverse_length[0] * b[1][c];
-              gradients[k][1] = b[0][a] * db[1][c] * data.inverse_length[1];
+              gradients[k][0] = db[0][i][0] * b[1][j];
+              gradients[k][1] = b[0][i] * db[1][j][0];
             }
         }
     }
@@ -347,14 +333,10 @@ namespace psmpm
     }
 
     FullMatrix<double>
-    TensorBSpline::extrapolation_weights(const unsigned int,
-                                         const unsigned int) const
+    TensorBSpline::extrapolation_weights(const unsigned int from,
+                                         const unsigned int to) const
     {
-      AssertThrow(false,
-                  ExcMessage("Basis/Type = bspline has no extrapolation "
-                             "weights (Mass matrix/Type = extrapolate is not "
-                             "available with it)."));
-      return FullMatrix<double>();
+      return univariate[0].extrapolation_weights(from, to); // refused
     }
 
     Quadrature<2>
@@ -390,9 +372,7 @@ namespace psmpm
       // M^-1 K on square cells is twice the univariate one: the univariate
       // factor (BSpline::stability_factor(), relative to the cell length)
       // over sqrt(2), relative to the shorter side.
-      BSpline univariate;
-      univariate.set_degree(p);
-      return univariate.stability_factor(lumped) / std::sqrt(2.);
+      return univariate[0].stability_factor(lumped) / std::sqrt(2.);
     }
 
     std::string
@@ -410,18 +390,16 @@ namespace psmpm
     std::vector<std::string>
     TensorBSpline::verified_mass_matrices() const
     {
-      // As in 1D (BSpline::verified_mass_matrices()): for p >= 3 the free
-      // DoFs' functions are not the B-splines and their lumped rows are
-      // not a sound mass.
-      if (p <= 2)
-        return {"lumped", "consistent"};
-      return {"consistent"};
+      // As in 1D: for p >= 3 the free DoFs' functions are not the
+      // B-splines (products of the univariate free functions) and their
+      // lumped rows are not a sound mass.
+      return univariate[0].verified_mass_matrices();
     }
 
     std::vector<std::string>
     TensorBSpline::verified_transfers() const
     {
-      return {"musl", "usl"};
+      return univariate[0].verified_transfers();
     }
 
     namespace

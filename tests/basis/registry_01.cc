@@ -1,8 +1,9 @@
 // ---------------------------------------------------------------------
 // psmpm: the spaces register themselves: SpaceRegistry<1> offers
-// "bspline|linear", SpaceRegistry<2> "linear|powell-sabin";
+// "bspline|linear", SpaceRegistry<2> "bspline|linear|powell-sabin" (2D
+// bspline: the tensor-product B-splines of Mesh/Type = cartesian);
 // create_space<dim> builds them by name, and an unknown name (or a 2D-only
-// space asked for in 1D, or the 1D-only bspline in 2D) throws an error
+// space asked for in 1D) throws an error
 // naming the parameter Basis/Type and the known names. The bspline space
 // is verified with lumped and consistent mass (at its default degree 2)
 // and MUSL/USL only, and refuses a Basis/Degree above 5.
@@ -63,7 +64,7 @@ main()
         << "2D: " << registry_2d.selection() << std::endl
         << "  " << registry_2d.documentation() << std::endl;
     PSMPM_CHECK(out, registry_1d.selection() == "bspline|linear");
-    PSMPM_CHECK(out, registry_2d.selection() == "linear|powell-sabin");
+    PSMPM_CHECK(out, registry_2d.selection() == "bspline|linear|powell-sabin");
     PSMPM_CHECK(out, !registry_1d.has("powell-sabin"));
 
     // What the parameter file accepts is what the registry holds.
@@ -125,14 +126,21 @@ main()
 
     const std::string unknown_2d = creation_error<2>("quadratic");
     const std::string unknown_1d = creation_error<1>("powell-sabin");
-    const std::string bspline_2d = creation_error<2>("bspline");
-    out << "2D bspline: " << bspline_2d << std::endl;
-    PSMPM_CHECK(out, bspline_2d.find("Basis/Type = bspline") == 0);
+    // 2D bspline: as in 1D, verified with lumped (p <= 2) and consistent
+    // mass; lumped by default (consistent on closed, filled meshes).
+    const auto bspline_2d = Basis::create_space<2>("bspline");
+    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 2);
+    PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "lumped");
+    PSMPM_CHECK(out, bspline_2d->closed_mass_matrix() == "consistent");
+    bspline_2d->set_degree(3);
+    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 1);
+    PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "consistent");
     out << "2D quadratic: " << unknown_2d << std::endl
         << "1D powell-sabin: " << unknown_1d << std::endl;
     PSMPM_CHECK(out, unknown_2d.find("Basis/Type = quadratic") == 0);
     PSMPM_CHECK(out,
-                unknown_2d.find("linear, powell-sabin") != std::string::npos);
+                unknown_2d.find("bspline, linear, powell-sabin") !=
+                  std::string::npos);
     PSMPM_CHECK(out, unknown_1d.find("Basis/Type = powell-sabin") == 0);
     PSMPM_CHECK(out, creation_error<2>("linear").empty());
   });

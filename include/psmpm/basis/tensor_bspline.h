@@ -6,6 +6,7 @@
 
 #include <deal.II/fe/fe_q.h>
 
+#include <psmpm/basis/bspline.h>
 #include <psmpm/basis/space.h>
 
 #include <array>
@@ -151,8 +152,14 @@ namespace psmpm
 
       std::unique_ptr<FE_Q<2>> fe;
 
-      /// Lattice offset (a, b) in the cell of every local DoF.
+      /// The univariate spaces on the grid lines in x and y: their ties
+      /// and their Bernstein polynomials (cell k = k-th column or row).
+      std::array<BSpline, 2> univariate;
+
+      /// Lattice offset (a, b) in the cell of every local DoF, and the
+      /// univariate local DoFs (FE_Q<1>(p) order) of its two factors.
       std::vector<std::array<unsigned int, 2>> local_lattice;
+      std::vector<std::array<unsigned int, 2>> local_univariate;
 
       /// Grid lines in x and y.
       std::array<std::vector<double>, 2> lines;
@@ -179,9 +186,10 @@ namespace psmpm
       Point<2>
       control_point(const std::array<unsigned int, 2> &IJ) const;
 
-      /// Univariate ties of the lattice lines in direction @p d.
+      /// Set up univariate[d] on the grid lines of direction @p d and
+      /// return the ties of its lattice lines.
       std::vector<Tie>
-      univariate_ties(const unsigned int d) const;
+      univariate_ties(const unsigned int d);
     };
   } // namespace Basis
 } // namespace psmpm
