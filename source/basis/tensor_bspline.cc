@@ -38,7 +38,7 @@ namespace psmpm
         {
           p  = degree;
           fe = std::make_unique<FE_Q<2>>(p);
-          cell_data.clear();
+          position.clear();
         }
     }
 
@@ -99,12 +99,10 @@ namespace psmpm
       AssertThrow((lines[0].size() - 1) * (lines[1].size() - 1) ==
                     tria.n_active_cells(),
                   ExcMessage(not_cartesian + "."));
-      cell_data.resize(tria.n_active_cells());
+      position.resize(tria.n_active_cells());
       for (const auto &cell : tria.active_cell_iterators())
         {
           const Point<2> lo = cell->vertex(0), hi = cell->vertex(3);
-          CellGeometry  &data = cell_data[cell->active_cell_index()];
-          data.origin         = lo;
           for (unsigned int d = 0; d < 2; ++d)
             {
               const auto i =
@@ -115,8 +113,7 @@ namespace psmpm
                           ExcMessage(not_cartesian + "; cell " +
                                      std::to_string(cell->active_cell_index()) +
                                      " is not one of its rectangles."));
-              data.position[d]       = i;
-              data.inverse_length[d] = 1 / (hi[d] - lo[d]);
+              position[cell->active_cell_index()][d] = i;
             }
         }
       for (unsigned int d = 0; d < 2; ++d)
@@ -172,8 +169,8 @@ namespace psmpm
     std::array<unsigned int, 2>
     TensorBSpline::lattice(const unsigned int c, const unsigned int k) const
     {
-      return {{cell_data[c].position[0] * p + local_lattice[k][0],
-               cell_data[c].position[1] * p + local_lattice[k][1]}};
+      return {{position[c][0] * p + local_lattice[k][0],
+               position[c][1] * p + local_lattice[k][1]}};
     }
 
     Point<2>
@@ -196,14 +193,13 @@ namespace psmpm
                             double            *values,
                             Tensor<1, 2>      *gradients) const
     {
-      AssertIndexRange(cell, cell_data.size());
-      const CellGeometry &data = cell_data[cell];
+      AssertIndexRange(cell, position.size());
       // The univariate Bernstein polynomials (and x- or y-derivatives) of
       // the cell's column and row, in FE_Q<1>(p) order.
       double       b[2][BSpline::max_degree + 1];
       Tensor<1, 1> db[2][BSpline::max_degree + 1];
       for (unsigned int d = 0; d < 2; ++d)
-        univariate[d].BSpline::evaluate(data.position[d],
+        univariate[d].BSpline::evaluate(position[cell][d],
                                         Point<1>(x[d]),
                                         b[d],
                                         gradients != nullptr ? db[d] : nullptr);
@@ -244,7 +240,7 @@ namespace psmpm
     {
       if (p == 1)
         return;
-      AssertThrow(cell_data.size() ==
+      AssertThrow(position.size() ==
                     dof_handler.get_triangulation().n_active_cells(),
                   ExcMessage("TensorBSpline::make_space_constraints: call "
                              "reinit() with this mesh first."));
@@ -343,22 +339,27 @@ namespace psmpm
     TensorBSpline::cell_quadrature(const DoFHandler<2> &dof_handler,
                                    const unsigned int   cell) const
     {
-      AssertThrow(cell < cell_data.size() &&
-                    cell_data.size() ==
+      AssertThrow(cell < position.size() &&
+                    position.size() ==
                       dof_handler.get_triangulation().n_active_cells(),
                   ExcMessage("TensorBSpline::cell_quadrature: call reinit() "
                              "with this mesh first."));
-      const CellGeometry   &data = cell_data[cell];
+      // The rectangle between the cell's grid lines.
+      Point<2>     lo;
+      Tensor<1, 2> size;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          lo[d]   = lines[d][position[cell][d]];
+          size[d] = lines[d][position[cell][d] + 1] - lo[d];
+        }
       const QGauss<2>       reference(p + 1);
       std::vector<Point<2>> points(reference.size());
       std::vector<double>   weights(reference.size());
-      const double area = 1 / (data.inverse_length[0] * data.inverse_length[1]);
       for (unsigned int q = 0; q < reference.size(); ++q)
         {
           for (unsigned int d = 0; d < 2; ++d)
-            points[q][d] =
-              data.origin[d] + reference.point(q)[d] / data.inverse_length[d];
-          weights[q] = area * reference.weight(q);
+            points[q][d] = lo[d] + reference.point(q)[d] * size[d];
+          weights[q] = size[0] * size[1] * reference.weight(q);
         }
       return Quadrature<2>(points, weights);
     }

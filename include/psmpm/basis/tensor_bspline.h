@@ -164,14 +164,9 @@ namespace psmpm
       /// Grid lines in x and y.
       std::array<std::vector<double>, 2> lines;
 
-      /// Per cell: lower left corner, 1 / side lengths, grid position.
-      struct CellGeometry
-      {
-        Point<2>                    origin;
-        std::array<double, 2>       inverse_length;
-        std::array<unsigned int, 2> position;
-      };
-      std::vector<CellGeometry> cell_data;
+      /// Grid position (column, row) of each cell; its geometry is that
+      /// of the grid lines (and of the univariate spaces' cells).
+      std::vector<std::array<unsigned int, 2>> position;
 
       /// Univariate ties per direction: ties[d][I] lists (K, w) with K
       /// free; empty for a free lattice line I.
