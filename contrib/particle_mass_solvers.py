@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Iterations of Jacobi-CG and AMG-CG on psmpm's own consistent particle
-mass matrices (issue 11, part 2 of doc/solver_study.md).
+"""Iterations and cost of Jacobi-CG, AMG-CG and pmg-CG (p-multigrid V-cycle,
+Powell-Sabin only) on psmpm's own consistent particle mass matrices
+(issues 10 and 11, part 2 of doc/solver_study.md).
 
   /usr/bin/python3 contrib/particle_mass_solvers.py
 
@@ -9,14 +10,22 @@ blocks, Powell-Sabin on 1 x 8) and the large soil column on 1 x 8 blocks up
 to t = 0.115 s, where its top element is nearly empty (the thesis' failing
 consistent Powell-Sabin case), each with Mass matrix/Type = consistent,
 Solver tolerance = 1e-8 and MUSL (two solves of dim components per step),
-once with Preconditioner = jacobi and once with amg. Per case the step with
+Direct solver size = 0 (CG everywhere), once with each Preconditioner
+(jacobi, amg, and pmg for Powell-Sabin). Per case the step with
 the largest Jacobi-CG condition estimate is reported: the CG iterations of
 that step (all 2 * dim solves: components fixed everywhere or with a zero
 right-hand side take none) and deal.II's CG estimate of the
 condition number of the Jacobi-preconditioned matrix (the unpreconditioned
-condition number is not measured in the MPM runs). Writes
-doc/data/particle_mass_solvers.tsv in the columns of solver_study.tsv.
+condition number is not measured in the MPM runs), the mean iterations
+per step over the run, the "solve" and "particle to grid" (assembly and
+preconditioner set-up) wall timers per step and the process CPU seconds
+(user + sys, /usr/bin/time). Writes doc/data/particle_mass_solvers.tsv
+(the columns of solver_study.tsv first) and, unless PSMPM_THROUGHPUT=0,
+doc/data/particle_mass_solvers_throughput.tsv: prm/benchmark_throughput.prm
+with Powell-Sabin, consistent and partially lumped mass, for 20 steps
+(Solver tolerance 1e-12 there, the run's default).
 """
+import json
 import os
 import subprocess
 import tempfile
@@ -45,16 +54,23 @@ CASES = [
 ]
 
 
-def run(prm, sets, preconditioner):
+PRECONDITIONERS = ["jacobi", "amg", "pmg"]
+
+
+def run(prm, sets, preconditioner, extra=()):
+    """Run a scene; return its statistics rows, summary.json and the
+    process' user + sys CPU seconds (/usr/bin/time)."""
     out = tempfile.mkdtemp(prefix="psmpm-pmass-")
-    cmd = [BIN, os.path.join(ROOT, "prm", prm), "--set",
-           f"Output directory={out}", "--set", "Output/Interval=0",
+    cmd = ["/usr/bin/time", "-f", "%U %S %e", "-o",
+           os.path.join(out, "time.txt"), BIN, os.path.join(ROOT, "prm", prm),
+           "--set", f"Output directory={out}", "--set", "Output/Interval=0",
            "--set", "Mass matrix/Type=consistent", "--set",
            "Mass matrix/Solver tolerance=1e-8", "--set",
            f"Mass matrix/Preconditioner={preconditioner}", "--set",
            "Mass matrix/Maximum iterations=100000", "--set",
+           "Mass matrix/Direct solver size=0", "--set",
            "Transfer/Scheme=musl"]
-    for s in sets:
+    for s in list(sets) + list(extra):
         cmd += ["--set", s]
     subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     names, rows = [], []
@@ -65,8 +81,10 @@ def run(prm, sets, preconditioner):
             elif line.strip():
                 rows.append(dict(zip(names, line.split())))
     with open(os.path.join(out, "summary.json")) as f:
-        summary = f.read()
-    return rows, summary
+        summary = json.load(f)
+    with open(os.path.join(out, "time.txt")) as f:
+        user, system, wall = (float(x) for x in f.read().split()[-3:])
+    return rows, summary, user + system, wall
 
 
 def main():
@@ -74,24 +92,89 @@ def main():
     with open(table, "w") as out:
         out.write("matrix\tdegree\tinverse_h\tn_dofs\tcondition_number\t"
                   "cg_iterations\tjacobi_cg_iterations_per_step\t"
-                  "amg_cg_iterations_per_step\tpmg_vcycles\tstep\tstatus\n")
+                  "amg_cg_iterations_per_step\tpmg_vcycles\t"
+                  "pmg_cg_iterations_per_step\t"
+                  "jacobi_mean_iterations\tamg_mean_iterations\t"
+                  "pmg_mean_iterations\t"
+                  "jacobi_solve_ms_per_step\tamg_solve_ms_per_step\t"
+                  "pmg_solve_ms_per_step\t"
+                  "jacobi_p2g_ms_per_step\tamg_p2g_ms_per_step\t"
+                  "pmg_p2g_ms_per_step\t"
+                  "jacobi_cpu_s\tamg_cpu_s\tpmg_cpu_s\tstep\tstatus\n")
         for name, prm, degree, sets in CASES:
-            jac, summary = run(prm, sets, "jacobi")
-            amg, _ = run(prm, sets, "amg")
+            if degree == 1:
+                # pmg is Powell-Sabin's (P1 is its coarse level).
+                results = {p: run(prm, sets, p) for p in PRECONDITIONERS[:2]}
+            else:
+                results = {p: run(prm, sets, p) for p in PRECONDITIONERS}
+            jac, summary, _, _ = results["jacobi"]
             # The step whose Jacobi-CG condition estimate is largest.
             k = max(range(len(jac)),
                     key=lambda i: float(jac[i]["condition_number"]))
-            per_step = lambda rows: (
-                rows[k]["cg_iterations"] if k < len(rows) else "-")
-            n_dofs = summary.split('"n_dofs":')[1].split(",")[0].strip()
-            status = summary.split('"status":')[1].split(",")[0].strip(
-                ' "\n}')
-            line = (f"{name}\t{degree}\t-\t{n_dofs}\t"
-                    f"{float(jac[k]['condition_number']):.4e}\t-\t"
-                    f"{per_step(jac)}\t{per_step(amg)}\t-\t"
-                    f"{jac[k]['step']}\t{status}\n")
+
+            def col(p, f):
+                return f(*results[p]) if p in results else "-"
+
+            def at_k(rows, *_):
+                return rows[k]["cg_iterations"] if k < len(rows) else "-"
+
+            def mean(rows, *_):
+                return f"{sum(int(r['cg_iterations']) for r in rows) / max(len(rows), 1):.1f}"
+
+            def per_step_ms(timer):
+                return lambda rows, s, *_: (
+                    f"{1e3 * s.get('timers_s', {}).get(timer, 0) / max(s['steps'], 1):.3g}")
+
+            def cpu(rows, s, c, w):
+                return f"{c:.2f}"
+
+            statuses = ",".join(f"{p}:{results[p][1]['status']}"
+                                for p in results)
+            fields = [name, degree, "-", summary["n_dofs"],
+                      f"{float(jac[k]['condition_number']):.4e}", "-",
+                      col("jacobi", at_k), col("amg", at_k), "-",
+                      col("pmg", at_k)]
+            fields += [col(p, mean) for p in PRECONDITIONERS]
+            fields += [col(p, per_step_ms("solve")) for p in PRECONDITIONERS]
+            fields += [col(p, per_step_ms("particle_to_grid"))
+                       for p in PRECONDITIONERS]
+            fields += [col(p, cpu) for p in PRECONDITIONERS]
+            fields += [jac[k]["step"], statuses]
+            line = "\t".join(str(x) for x in fields) + "\n"
             out.write(line)
             print(line, end="", flush=True)
+    if os.environ.get("PSMPM_THROUGHPUT", "1") == "1":
+        throughput()
+
+
+def throughput():
+    """prm/benchmark_throughput.prm (closed bar, 320,000 particles) with
+    Powell-Sabin, consistent and partially lumped (Powell-Sabin's default
+    there) mass, 20 steps, each preconditioner, one process: run CPU
+    (user + sys) beside wall and the summary's phase timers."""
+    table = os.path.join(ROOT, "doc", "data",
+                         "particle_mass_solvers_throughput.tsv")
+    with open(table, "w") as out:
+        out.write("mass\tpreconditioner\tn_dofs\tn_particles\tsteps\t"
+                  "cg_iterations_per_step\tcpu_user_sys_s\twall_s\t"
+                  "loop_cpu_s\tsolve_s\tparticle_to_grid_s\tstatus\n")
+        for mass in ["consistent", "partially lumped"]:
+            sets = ["Basis/Type=powell-sabin", "Time/End time=2e-4",
+                    f"Mass matrix/Type={mass}"]
+            for p in PRECONDITIONERS:
+                rows, s, c, w = run("benchmark_throughput.prm", sets, p,
+                                    ["Mass matrix/Solver tolerance=1e-12"])
+                t = s.get("timers_s", {})
+                line = (f"{mass}\t{p}\t{s['n_dofs']}\t{s['n_particles']}\t"
+                        f"{s['steps']}\t"
+                        f"{s['cg_iterations'] / max(s['steps'], 1):.1f}\t"
+                        f"{c:.2f}\t{w:.2f}\t"
+                        f"{s.get('cpu_time_loop_s', 0):.2f}\t"
+                        f"{t.get('solve', 0):.2f}\t"
+                        f"{t.get('particle_to_grid', 0):.2f}\t"
+                        f"{s['status']}\n")
+                out.write(line)
+                print(line, end="", flush=True)
 
 
 if __name__ == "__main__":

@@ -33,6 +33,18 @@ namespace psmpm
                     parameters.smoother == "jacobi",
                   ExcMessage("PMultigrid: unknown smoother '" +
                              parameters.smoother + "'."));
+      residuals.resize(matrices.size());
+      coarse_rhs.resize(matrices.size());
+      coarse_solution.resize(matrices.size());
+      for (unsigned int l = 0; l < matrices.size(); ++l)
+        {
+          residuals[l].reinit(matrices[l]->m());
+          if (l > 0)
+            {
+              coarse_rhs[l].reinit(matrices[l - 1]->m());
+              coarse_solution[l].reinit(matrices[l - 1]->m());
+            }
+        }
     }
 
     void
@@ -46,7 +58,7 @@ namespace psmpm
         pre ? parameters.pre_smoothing : parameters.post_smoothing;
       if (parameters.smoother == "jacobi")
         {
-          Vector<double> r(x.size());
+          Vector<double> &r = residuals[level];
           for (unsigned int s = 0; s < steps; ++s)
             {
               A.residual(r, x, b);
@@ -72,7 +84,13 @@ namespace psmpm
     {
       // The correction starts from zero: the tolerance is relative to the
       // restricted residual, as in the chapter.
-      Vector<double>           e(b.size());
+      Vector<double> e(b.size());
+      if (coarse_solver)
+        {
+          coarse_solver(e, b);
+          x += e;
+          return;
+        }
       SolverControl            control(10 * b.size() + 100,
                             parameters.coarse_tolerance * b.l2_norm(),
                             false,
@@ -102,7 +120,7 @@ namespace psmpm
           return;
         }
       smooth(level, b, x, true);
-      Vector<double> r(x.size());
+      Vector<double> &r = residuals[level];
       matrices[level]->residual(r, x, b);
       if (level == 0)
         {
@@ -113,9 +131,12 @@ namespace psmpm
         }
       else
         {
-          Vector<double> rc(matrices[level - 1]->m()),
-            ec(matrices[level - 1]->m());
-          restrictions[level]->vmult(rc, r);
+          Vector<double> &rc = coarse_rhs[level], &ec = coarse_solution[level];
+          if (restrictions[level] != nullptr)
+            restrictions[level]->vmult(rc, r);
+          else
+            prolongations[level]->Tvmult(rc, r);
+          ec = 0;
           vcycle(level - 1, rc, ec);
           prolongations[level]->vmult_add(x, ec);
         }

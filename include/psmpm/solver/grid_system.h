@@ -9,6 +9,9 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -16,6 +19,7 @@
 #include <psmpm/basis/space.h>
 #include <psmpm/solver/dense_cholesky.h>
 #include <psmpm/solver/mass_strategy.h>
+#include <psmpm/solver/p_multigrid.h>
 
 #include <array>
 #include <memory>
@@ -61,6 +65,18 @@ namespace psmpm
         /// Fictitious mass fraction alpha of the stabilised strategies
         /// (Mass matrix/Stabilization).
         double stabilization = 1;
+        /// Preconditioner = pmg: smoother of the Powell-Sabin level
+        /// ("gauss-seidel": forward sweeps before, backward after the
+        /// coarse correction; "jacobi": damped Jacobi) and its sweeps
+        /// before and after (Mass matrix/Multigrid smoother, .../Multigrid
+        /// smoothing steps).
+        std::string  multigrid_smoother        = "gauss-seidel";
+        unsigned int multigrid_smoothing_steps = 1;
+        /// Preconditioner = pmg: "galerkin" (P_d^T M_d P_d of the
+        /// assembled matrix) or "particles" (the P1 particle mass
+        /// matrix, cell by cell from the same cell blocks; Mass
+        /// matrix/Multigrid coarse matrix).
+        std::string multigrid_coarse = "galerkin";
       };
 
       struct SolveStatistics
@@ -267,6 +283,27 @@ namespace psmpm
       {
         return matrix[d];
       }
+      /**
+       * Preconditioner = pmg (one process, Powell-Sabin): the prolongation
+       * P from the P1 space on the same triangulation (column: vertex
+       * index) to the space (row: DoF), P_iv = the affine piece of the hat
+       * function of v on a cell around DoF i's vertex, evaluated at DoF
+       * i's control point; P reproduces every affine function exactly.
+       * Empty otherwise.
+       */
+      const SparseMatrix<double> &
+      multigrid_prolongation() const
+      {
+        return pmg_prolongation;
+      }
+      /// Preconditioner = pmg: the coarse (P1) matrix P_d^T M_d P_d of
+      /// component d after assemble_mass(), P_d = P with the rows of
+      /// constrained DoFs zero (unit diagonal where a vertex has none).
+      const SparseMatrix<double> &
+      multigrid_coarse_matrix(const unsigned int d) const
+      {
+        return pmg_coarse[d];
+      }
       /// Lumped mass in local relevant numbering (after assemble_mass).
       const std::vector<double> &
       lumped_mass() const
@@ -357,6 +394,12 @@ namespace psmpm
       update_constraint_flags(const unsigned int d);
       unsigned int
       solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
+      /// Preconditioner = pmg: P from the control points (reinit()).
+      void
+      build_multigrid_prolongation();
+      /// Preconditioner = pmg: the levels of component d from matrix[d].
+      void
+      assemble_multigrid(const unsigned int d);
 
       std::unique_ptr<MassStrategy<dim>>              mass_strategy;
       const Basis::Space<dim>                        &space;
@@ -387,6 +430,34 @@ namespace psmpm
       unsigned int                                          generation = 0;
       std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
       std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
+      /// Preconditioner = pmg. Serial deal.II matrices, as PMultigrid
+      /// takes: the prolongation P (shared pattern) and per component P_d,
+      /// the copy of matrix[d] (pattern and value-array positions in
+      /// matrix[d] rebuilt when the sparsity generation changes), M_d P_d,
+      /// the coarse matrix, its factorisation and the cycle.
+      SparsityPattern                       pmg_prolongation_pattern;
+      SparseMatrix<double>                  pmg_prolongation;
+      std::array<SparseMatrix<double>, dim> pmg_transfer;
+      /// Per owned cell's DoF k the barycentric coordinates of its control
+      /// point in that cell (coarse = particles: the cell's P1 hat
+      /// functions in the cell's Powell-Sabin functions), the P1 pattern
+      /// and which vertices are fixed for component d.
+      std::vector<double>                          pmg_cell_weights;
+      std::vector<unsigned int>                    pmg_cell_vertices;
+      SparsityPattern                              pmg_p1_pattern;
+      std::array<std::vector<char>, dim>           pmg_fixed_vertex;
+      SparsityPattern                              pmg_fine_pattern;
+      std::vector<int>                             pmg_fine_slots;
+      unsigned int                                 pmg_generation = 0;
+      std::array<bool, dim>                        pmg_rebuild{};
+      std::array<SparseMatrix<double>, dim>        pmg_fine;
+      std::array<SparsityPattern, dim>             pmg_product_pattern;
+      std::array<SparseMatrix<double>, dim>        pmg_product;
+      std::array<SparsityPattern, dim>             pmg_coarse_pattern;
+      std::array<SparseMatrix<double>, dim>        pmg_coarse;
+      std::array<SparseDirectUMFPACK, dim>         pmg_coarse_direct;
+      std::array<std::unique_ptr<PMultigrid>, dim> pmg;
+      Vector<double>                               pmg_rhs, pmg_solution;
       /// Direct solves (Parameters::direct_size): whether this run may use
       /// them, and per component whether this step's matrix was factored.
       bool direct = false;

@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,8 +56,10 @@ namespace psmpm
       /**
        * Level l = 0 (coarsest) to L (finest): matrices[l];
        * prolongations[l] maps level l - 1 to level l, restrictions[l] level
-       * l to level l - 1 (entries 0 are unused). The matrices must outlive
-       * this object.
+       * l to level l - 1 (entries 0 are unused). A null restriction is the
+       * transpose of the prolongation (applied by Tvmult: a Galerkin
+       * hierarchy needs no second matrix). The matrices must outlive this
+       * object.
        */
       PMultigrid(const Parameters                                &parameters,
                  const std::vector<const SparseMatrix<double> *> &matrices,
@@ -73,6 +76,19 @@ namespace psmpm
       solve(const Vector<double> &b,
             Vector<double>       &x,
             const double          tolerance) const;
+
+      /**
+       * Replace the coarsest-level CG by @p solver (x = A_0^{-1} b, e.g. a
+       * direct factorisation): a V-cycle used as a CG preconditioner must
+       * be a fixed linear operator, which an inner CG to a loose tolerance
+       * is not.
+       */
+      void
+      set_coarse_solver(
+        std::function<void(Vector<double> &, const Vector<double> &)> solver)
+      {
+        coarse_solver = std::move(solver);
+      }
 
       /// One V-cycle on level @p level.
       void
@@ -94,6 +110,13 @@ namespace psmpm
       std::vector<const SparseMatrix<double> *> matrices;
       std::vector<const SparseMatrix<double> *> prolongations;
       std::vector<const SparseMatrix<double> *> restrictions;
+      std::function<void(Vector<double> &, const Vector<double> &)>
+        coarse_solver;
+      /// Per level: residual, restricted residual and coarse correction
+      /// (kept so that a cycle, which a CG preconditioner runs once per
+      /// iteration, allocates nothing).
+      mutable std::vector<Vector<double>> residuals, coarse_rhs,
+        coarse_solution;
     };
   } // namespace Solver
 } // namespace psmpm
