@@ -14,7 +14,7 @@ namespace psmpm
     template <int dim>
     void
     BodyStatistics<dim>::add_columns(const Simulator::State<dim> &state,
-                                     TableHandler                &statistics)
+                                     StatisticsTable                &statistics)
     {
       const auto        &particles = state.particles;
       const unsigned int n         = particles.n_bodies;

@@ -35,7 +35,7 @@ namespace psmpm
     template <int dim>
     void
     EnergyStatistics<dim>::add_columns(const Energies<dim> &e,
-                                       TableHandler        &statistics)
+                                       StatisticsTable        &statistics)
     {
       statistics.add_value("kinetic_energy", e.kinetic);
       statistics.add_value("strain_energy", e.strain);

@@ -47,7 +47,7 @@ namespace psmpm
     void
     ErrorNorms<dim>::execute(const Simulator::State<dim> &state,
                              const bool                   last,
-                             TableHandler                &statistics)
+                             StatisticsTable                &statistics)
     {
       const char *columns[] = {"displacement_L2", "velocity_L2", "stress_L2"};
       if (state.step % interval != 0 && !last)

@@ -123,7 +123,7 @@ namespace psmpm
     template <int dim>
     void
     RotationStatistics<dim>::add_columns(const Values &values,
-                                         TableHandler &statistics)
+                                         StatisticsTable &statistics)
     {
       if (dim == 1)
         return;

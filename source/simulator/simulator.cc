@@ -18,8 +18,6 @@
 #include <psmpm/simulator/simulator.h>
 
 #include <algorithm>
-#include <boost/archive/binary_iarchive.hpp>
-#include <boost/archive/binary_oarchive.hpp>
 #include <cmath>
 #include <csignal>
 #include <fstream>
@@ -705,13 +703,10 @@ namespace psmpm
               statistics.set_scientific(c, true);
               statistics.set_precision(c, 8);
             }
-          write_atomically(
-            output_directory + "/statistics.txt",
-            [this](std::ostream &out) {
-              statistics.write_text(
-                out,
-                TableHandler::table_with_separate_column_description);
-            });
+          write_atomically(output_directory + "/statistics.txt",
+                           [this](std::ostream &out) {
+                             statistics.write_text(out);
+                           });
         }
     }
 
@@ -891,14 +886,9 @@ namespace psmpm
       archive.put_integer("simulator/time_outputs", time_outputs);
       archive.put("simulator/wall_time", wall_offset + wall.wall_time());
       archive.put("simulator/step_times", step_times);
-      {
-        // The rows so far, exactly (doubles, integers and "-" entries
-        // with their column formats): deal.II's own serialization.
-        std::ostringstream              bytes;
-        boost::archive::binary_oarchive out(bytes);
-        out << statistics;
-        archive.put_bytes("simulator/statistics", bytes.str());
-      }
+      // The rows so far, exactly (doubles, integers and "-" entries with
+      // their column formats).
+      archive.put_bytes("simulator/statistics", statistics.to_bytes());
 
       time_step_control.save(archive);
       monitor.save(archive);
@@ -1022,12 +1012,7 @@ namespace psmpm
           total_iterations = shared.get_integer("simulator/cg_iterations");
           time_outputs     = shared.get_integer("simulator/time_outputs");
           wall_offset      = shared.get_number("simulator/wall_time");
-          {
-            std::istringstream bytes(shared.get_bytes("simulator/statistics"));
-            boost::archive::binary_iarchive in(bytes);
-            statistics = TableHandler();
-            in >> statistics;
-          }
+          statistics.from_bytes(shared.get_bytes("simulator/statistics"));
           time_step_control.load(shared);
           monitor.load(shared);
           rotation_statistics.load(shared);
@@ -1057,13 +1042,6 @@ namespace psmpm
           AssertThrow(false,
                       ExcMessage("checkpoint " + file + ": " +
                                  Utilities::trim(s.str())));
-        }
-      catch (const boost::archive::archive_exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("checkpoint " + file +
-                                 ": entry 'simulator/statistics' is damaged (" +
-                                 e.what() + ")"));
         }
       resumed_from = file;
       resumed_step = state.step;

@@ -1158,10 +1158,15 @@ namespace psmpm
           writable.compress(VectorOperation::add);
           rhs = writable;
         }
-      x                 = 0;
+      // x holds the initial guess (solve()); the stopping test is
+      // relative to |rhs|, so a guess changes the iterations, not the
+      // accuracy.
       const double norm = rhs.l2_norm();
       if (norm == 0)
-        return 0;
+        {
+          x = 0;
+          return 0;
+        }
       if (factored[d])
         {
           dense[d].solve(rhs, x);
@@ -1182,8 +1187,9 @@ namespace psmpm
           // CG on the serial copy that the cycle smooths (the same
           // matrix), one V-cycle from zero per iteration.
           pmg_rhs.reinit(rhs.locally_owned_size(), true);
-          pmg_solution.reinit(rhs.locally_owned_size());
+          pmg_solution.reinit(rhs.locally_owned_size(), true);
           std::copy(rhs.begin(), rhs.end(), pmg_rhs.begin());
+          std::copy(x.begin(), x.end(), pmg_solution.begin());
           SolverCG<Vector<double>> pmg_cg(control);
           pmg_cg.connect_condition_number_slot([this](const double c) {
             stats.condition_number = std::max(stats.condition_number, c);
@@ -1204,13 +1210,30 @@ namespace psmpm
     GridSystem<dim>::solve(std::vector<Tensor<1, dim>> &solution,
                            const bool                   lumped_only)
     {
+      // Warm start: @p solution still holds the last step's grid field
+      // (same DoFs while its size is unchanged), which the new one
+      // differs from by O(dt); CG needs fewer iterations from it than
+      // from zero. Fixed and unsupported DoFs start at zero, as the
+      // condensed system has them.
+      const bool warm = solution.size() == relevant_global.size();
       solution.resize(relevant_global.size());
       TrilinosWrappers::MPI::Vector &x     = solution_vector;
       std::vector<double>           &local = local_solution;
       for (unsigned int d = 0; d < dim; ++d)
         {
           if (uses_matrix() && !lumped_only)
-            stats.iterations += solve_consistent(d, x);
+            {
+              x               = 0;
+              double *const v = x.begin();
+              if (warm && !factored[d])
+                for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
+                  {
+                    const unsigned int l = owned_to_relevant[j];
+                    if (!constrained[d][l] && local_lumped[l] > 0)
+                      v[j] = solution[l][d];
+                  }
+              stats.iterations += solve_consistent(d, x);
+            }
           else
             {
               // Tensor<1,dim> stores its components contiguously.
@@ -1222,7 +1245,19 @@ namespace psmpm
               for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
                 v[j] = m[j] > 0 ? b[j] / m[j] : 0.;
             }
-          active_constraints[d].distribute(x);
+          if (only_dirichlet[d])
+            {
+              // Homogeneous Dirichlet rows only: what distribute() does,
+              // without the ghosted copy of x it builds for a parallel
+              // vector (on small systems that copy cost more than the
+              // solve).
+              double *const v = x.begin();
+              for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
+                if (constrained[d][owned_to_relevant[j]])
+                  v[j] = 0;
+            }
+          else
+            active_constraints[d].distribute(x);
           to_local(x, local);
           for (unsigned int l = 0; l < local.size(); ++l)
             solution[l][d] = local[l];

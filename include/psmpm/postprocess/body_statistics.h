@@ -4,7 +4,7 @@
 #ifndef psmpm_postprocess_body_statistics_h
 #define psmpm_postprocess_body_statistics_h
 
-#include <deal.II/base/table_handler.h>
+#include <psmpm/postprocess/statistics_table.h>
 
 #include <psmpm/simulator/state.h>
 
@@ -29,7 +29,7 @@ namespace psmpm
     {
     public:
       static void
-      add_columns(const Simulator::State<dim> &state, TableHandler &statistics);
+      add_columns(const Simulator::State<dim> &state, StatisticsTable &statistics);
     };
   } // namespace Postprocess
 } // namespace psmpm

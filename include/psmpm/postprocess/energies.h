@@ -4,7 +4,7 @@
 #ifndef psmpm_postprocess_energies_h
 #define psmpm_postprocess_energies_h
 
-#include <deal.II/base/table_handler.h>
+#include <psmpm/postprocess/statistics_table.h>
 
 #include <psmpm/simulator/state.h>
 
@@ -48,7 +48,7 @@ namespace psmpm
 
       /// Columns kinetic_energy ... momentum_y of @p e.
       static void
-      add_columns(const Energies<dim> &e, TableHandler &statistics);
+      add_columns(const Energies<dim> &e, StatisticsTable &statistics);
 
     private:
       mutable std::vector<double> energy_density; // scratch

@@ -4,7 +4,7 @@
 #ifndef psmpm_postprocess_error_norms_h
 #define psmpm_postprocess_error_norms_h
 
-#include <deal.II/base/table_handler.h>
+#include <psmpm/postprocess/statistics_table.h>
 
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/summary.h>
@@ -41,7 +41,7 @@ namespace psmpm
       void
       execute(const Simulator::State<dim> &state,
               const bool                   last,
-              TableHandler                &statistics);
+              StatisticsTable                &statistics);
 
       /// The errors now: the last computed ones if they are of this step.
       Errors

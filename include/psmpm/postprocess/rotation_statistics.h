@@ -5,7 +5,7 @@
 #define psmpm_postprocess_rotation_statistics_h
 
 #include <deal.II/base/point.h>
-#include <deal.II/base/table_handler.h>
+#include <psmpm/postprocess/statistics_table.h>
 
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/simulator/state.h>
@@ -51,7 +51,7 @@ namespace psmpm
       compute(const Simulator::State<dim> &state);
 
       void
-      add_columns(const Values &values, TableHandler &statistics);
+      add_columns(const Values &values, StatisticsTable &statistics);
 
       void
       fill_summary(Summary &summary) const;

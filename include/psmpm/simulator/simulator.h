@@ -6,7 +6,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/table_handler.h>
+#include <psmpm/postprocess/statistics_table.h>
 #include <deal.II/base/timer.h>
 
 #include <psmpm/base/phase_timer.h>
@@ -306,7 +306,7 @@ namespace psmpm
 
       // Run record.
       std::string  output_directory;
-      TableHandler statistics;
+      Postprocess::StatisticsTable statistics;
       PhaseTimer   timer;
       Status       status           = Status::completed;
       unsigned int failed_step      = 0;
