@@ -127,14 +127,17 @@ main()
     const std::string unknown_2d = creation_error<2>("quadratic");
     const std::string unknown_1d = creation_error<1>("powell-sabin");
     // 2D bspline: as in 1D, verified with lumped (p <= 2) and consistent
-    // mass; lumped by default (consistent on closed, filled meshes).
+    // mass, and with ghost penalty mass; lumped by default for p <= 2,
+    // ghost penalty for p >= 3 (consistent on closed, filled meshes).
     const auto bspline_2d = Basis::create_space<2>("bspline");
-    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 2);
+    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 3);
+    PSMPM_CHECK(out,
+                bspline_2d->verified_mass_matrices()[2] == "ghost penalty");
     PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "lumped");
     PSMPM_CHECK(out, bspline_2d->closed_mass_matrix() == "consistent");
     bspline_2d->set_degree(3);
-    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 1);
-    PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "consistent");
+    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 2);
+    PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "ghost penalty");
     out << "2D quadratic: " << unknown_2d << std::endl
         << "1D powell-sabin: " << unknown_1d << std::endl;
     PSMPM_CHECK(out, unknown_2d.find("Basis/Type = quadratic") == 0);
