@@ -4,7 +4,7 @@ cartesian), doc/chapter.md "BSMPM in 2D": is it stable where consistent
 mass fails (nearly empty cells) and as accurate where the mesh is full?
 
   /usr/bin/python3 contrib/bsmpm_ghost_penalty_study.py [build/psmpm]
-  (PSMPM_STUDY_PARTS=free,sweep,p3,bar,column,collapse to pick parts)
+  (PSMPM_STUDY_PARTS=free,sweep,p3,bar,column,collapse,1d to pick parts)
 
  free:     the free body of contrib/bsmpm_2d_stability.sh (8 x 2 body in a
            12 x 4 mesh, velocity in both directions, End time 10) at
@@ -14,7 +14,9 @@ mass fails (nearly empty cells) and as accurate where the mesh is full?
  p3:       the free body with cubic B-splines (consistent, ghost penalty);
  bar:      the thesis bar, 8 (and 16) rectangles, p = 2 and 3;
  column:   the soil column (prm/soil_column_small.prm) on 1 x 8 cells;
- collapse: prm/column_collapse.prm on 24 x 10 rectangles (no test uses it).
+ collapse: prm/column_collapse.prm on 24 x 10 rectangles (no test uses it);
+ 1d:       1D B-splines: a free bar of 8 cells inside 12 (Courant 0.5 to
+           1.0) and the filled chapter and vibrating bars.
 
 Per run: status, steps, energy rise (largest rise of kinetic + strain +
 gravitational energy above its initial value over the largest energy),
@@ -36,7 +38,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BIN = os.path.realpath(sys.argv[1] if len(sys.argv) > 1 else
                        os.path.join(ROOT, "build", "psmpm"))
 PARTS = os.environ.get("PSMPM_STUDY_PARTS",
-                       "free,sweep,p3,bar,column,collapse").split(",")
+                       "free,sweep,p3,bar,column,collapse,1d").split(",")
 
 FREE = """set Output directory = {out}
 subsection Geometry
@@ -78,6 +80,47 @@ end
 subsection Mass matrix
   set Type = {mass}
   set Stabilization = {gamma}
+end
+subsection Output
+  set Interval = 0
+end
+"""
+
+
+FREE_1D = """set Output directory = {out}
+subsection Geometry
+  set Dimension = 1
+  set Length = 12
+end
+subsection Mesh
+  set Blocks x = 12
+end
+subsection Basis
+  set Type = bspline
+  set Degree = 2
+end
+subsection Material
+  set Density = 1
+  set Young's modulus = 100
+  set Poisson's ratio = 0
+end
+subsection Particles
+  set Per block x = 3
+  set Region = 2, 10
+end
+subsection Initial conditions
+  set Velocity = 0.1*sin(pi*(x-2)/8)
+end
+subsection Boundary conditions
+  set Fixed x =
+end
+subsection Time
+  set End time = 10
+  set Time step = 0
+  set Courant number = {courant}
+end
+subsection Mass matrix
+  set Type = {mass}
 end
 subsection Output
   set Interval = 0
@@ -129,8 +172,9 @@ def run(args):
         scale = max(max(a + b + abs(c) for a, b, c in zip(k, w, g)), 1e-300)
         s["energy_rise"] = max(t - total[0] for t in total) / scale
     mx, my = series("momentum_x"), series("momentum_y")
+    my = my or [0.] * len(mx)  # 1D
     drift = 0
-    if mx and my:
+    if mx:
         scale = max(max((a * a + b * b) ** 0.5 for a, b in zip(mx, my)),
                     1e-300)
         drift = max(((a - mx[0]) ** 2 + (b - my[0]) ** 2) ** 0.5
@@ -223,6 +267,19 @@ def main():
                          "--set", "Mesh/Type=cartesian",
                          "--set", "Basis/Type=bspline",
                          "--set", f"Basis/Degree={p}",
+                         "--set", f"Mass matrix/Type={mass}"]))
+    if "1d" in PARTS:
+        header("1D free bar, 8 cells inside 12, p = 2")
+        for mass in ["lumped", "consistent", "ghost penalty"]:
+            for c in ["0.5", "0.8", "0.9", "1.0"]:
+                row(f"{mass}, C = {c}",
+                    run(FREE_1D.format(out="{out}", courant=c, mass=mass)))
+        header("1D bars, filled mesh, p = 2")
+        for prm in ["chapter_bar_1d.prm", "vibrating_bar_1d.prm"]:
+            for mass in ["consistent", "ghost penalty"]:
+                row(f"{prm}, {mass}",
+                    run([os.path.join(ROOT, "prm", prm),
+                         "--set", "Basis/Type=bspline",
                          "--set", f"Mass matrix/Type={mass}"]))
 
 
