@@ -616,8 +616,10 @@ namespace psmpm
               // patch block over DoFs tied to others (the B-splines'
               // C^{p-1} ties) is distributed to their targets, which
               // couple across the two cells although no single cell
-              // couples them. (With Dirichlet constraints only, nothing
-              // new; patch blocks are over relevant DoFs.)
+              // couples them; without these entries the assembly of a
+              // B-spline ghost penalty adds outside the pattern. (With
+              // Dirichlet constraints only, nothing new; patch blocks are
+              // over relevant DoFs.)
               patch.erase(std::remove_if(patch.begin(),
                                          patch.end(),
                                          [this](const auto i) {
