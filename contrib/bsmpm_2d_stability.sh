@@ -2,7 +2,7 @@
 # Stable time step of 2D BSMPM (Basis/Type = bspline, Mesh/Type =
 # cartesian), doc/chapter.md "BSMPM in 2D": the automatic time step
 # dt = C f h_min / c_p at Courant numbers C from 0.8 to 2, quadratic
-# B-splines, lumped and consistent mass, on
+# B-splines, lumped, consistent and ghost penalty mass, on
 #  box:  an 8 x 2 body filling an 8 x 2 mesh with roller walls, velocity
 #        in both directions (the stability limit proper), and
 #  free: the same body free inside a 12 x 4 mesh (cells empty as it moves).
@@ -73,7 +73,7 @@ end
 PRM
 }
 for s in box free; do
-  for m in lumped consistent; do
+  for m in lumped consistent "ghost penalty"; do
     for c in 0.8 0.9 1.0 1.1 1.2 1.4 1.7 2.0; do
       scene $s $m $c > scene.prm
       "$psmpm" scene.prm > /dev/null 2>&1 || true

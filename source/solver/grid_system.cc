@@ -612,6 +612,24 @@ namespace psmpm
               for (const auto i : patch)
                 if (relevant.is_element(i))
                   dsp.add_entries(i, patch.begin(), patch.end(), true);
+              // And through the constraints, as the cells' couplings: a
+              // patch block over DoFs tied to others (the B-splines'
+              // C^{p-1} ties) is distributed to their targets, which
+              // couple across the two cells although no single cell
+              // couples them; without these entries the assembly of a
+              // B-spline ghost penalty adds outside the pattern. (With
+              // Dirichlet constraints only, nothing new; patch blocks are
+              // over relevant DoFs.)
+              patch.erase(std::remove_if(patch.begin(),
+                                         patch.end(),
+                                         [this](const auto i) {
+                                           return !relevant.is_element(i);
+                                         }),
+                          patch.end());
+              for (unsigned int d = 0; d < dim; ++d)
+                active_constraints[d].add_entries_local_to_global(patch,
+                                                                  dsp,
+                                                                  true);
             }
         }
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);

@@ -5,8 +5,8 @@
 // create_space<dim> builds them by name, and an unknown name (or a 2D-only
 // space asked for in 1D) throws an error
 // naming the parameter Basis/Type and the known names. The bspline space
-// is verified with lumped and consistent mass (at its default degree 2)
-// and MUSL/USL only, and refuses a Basis/Degree above 5.
+// is verified with lumped, consistent and ghost penalty mass (at its
+// default degree 2) and MUSL/USL only, and refuses a Basis/Degree above 5.
 // ---------------------------------------------------------------------
 #include <deal.II/base/patterns.h>
 
@@ -106,7 +106,7 @@ main()
       const auto linear  = Basis::create_space<1>("linear");
       const auto bspline = Basis::create_space<1>("bspline");
       PSMPM_CHECK(out, linear->verified_mass_matrices().empty());
-      PSMPM_CHECK(out, bspline->verified_mass_matrices().size() == 2);
+      PSMPM_CHECK(out, bspline->verified_mass_matrices().size() == 3);
       PSMPM_CHECK(out, bspline->verified_transfers().size() == 2);
       PSMPM_CHECK(out, bspline->default_mass_matrix() == "consistent");
       bool refused = false;
@@ -126,15 +126,18 @@ main()
 
     const std::string unknown_2d = creation_error<2>("quadratic");
     const std::string unknown_1d = creation_error<1>("powell-sabin");
-    // 2D bspline: as in 1D, verified with lumped (p <= 2) and consistent
-    // mass; lumped by default (consistent on closed, filled meshes).
+    // 2D bspline: as in 1D, verified with lumped (p <= 2), consistent and
+    // ghost penalty mass; lumped by default for p <= 2,
+    // ghost penalty for p >= 3 (consistent on closed, filled meshes).
     const auto bspline_2d = Basis::create_space<2>("bspline");
-    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 2);
+    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 3);
+    PSMPM_CHECK(out,
+                bspline_2d->verified_mass_matrices()[2] == "ghost penalty");
     PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "lumped");
     PSMPM_CHECK(out, bspline_2d->closed_mass_matrix() == "consistent");
     bspline_2d->set_degree(3);
-    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 1);
-    PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "consistent");
+    PSMPM_CHECK(out, bspline_2d->verified_mass_matrices().size() == 2);
+    PSMPM_CHECK(out, bspline_2d->default_mass_matrix() == "ghost penalty");
     out << "2D quadratic: " << unknown_2d << std::endl
         << "1D powell-sabin: " << unknown_1d << std::endl;
     PSMPM_CHECK(out, unknown_2d.find("Basis/Type = quadratic") == 0);

@@ -129,8 +129,10 @@ namespace psmpm
 
       /// p <= 2: lumped, the one that stays stable as cells empty (a free
       /// body completes at every Courant number to 2, consistent mass
-      /// fails within 115 steps, doc/chapter.md "BSMPM in 2D"); p >= 3:
-      /// consistent, the only one verified.
+      /// fails within 115 steps, ghost penalty mass from Courant number
+      /// 0.96 on, doc/chapter.md "BSMPM in 2D"), and the cheapest; p >= 3:
+      /// ghost penalty (lumped mass is not sound there, consistent mass
+      /// fails on nearly empty cells).
       std::string
       default_mass_matrix(const bool grid_moves = false) const override;
 
@@ -140,7 +142,8 @@ namespace psmpm
       std::string
       closed_mass_matrix() const override;
 
-      /// Lumped and consistent for p <= 2, consistent only for p >= 3.
+      /// Lumped, consistent and ghost penalty for p <= 2, consistent and
+      /// ghost penalty for p >= 3.
       std::vector<std::string>
       verified_mass_matrices() const override;
 
