@@ -26,9 +26,8 @@
 // What each benchmark times, and how it reaches the code:
 //  * p2g_accumulate: the particle loop of TransferScheme::particles_to_grid
 //    (MUSL's forces to the grid: lumped mass, consistent cell mass if the
-//    strategy uses a matrix, cell right-hand sides), zeroing included, a
-//    copy of that loop on the simulator's own arrays: the library function
-//    is protected and also assembles the mass;
+//    strategy uses a matrix, cell right-hand sides), zeroing included:
+//    ParticleLoops::particles_to_cells, without the mass assembly;
 //  * p2g_with_assembly: TransferScheme::particles_to_grid itself (the loop
 //    above plus GridSystem::assemble_mass), through a class derived from
 //    TransferScheme that makes the protected static public;
@@ -38,9 +37,9 @@
 //    DoF; consistent: Jacobi-CG, or the dense Cholesky below 600 DoFs);
 //  * g2p_velocity: MUSL's first grid-to-particle loop (particle velocities
 //    from the grid acceleration, momentum back into the cell right-hand
-//    sides); a copy, the library's loop is private to musl.cc;
+//    sides): ParticleLoops::accelerate_particles;
 //  * g2p_gradient: MUSL's second one (velocity and velocity gradient at
-//    the particle, positions), also a copy;
+//    the particle, positions): ParticleLoops::move_particles;
 //  * material_update: TransferScheme::update_material (the material's
 //    stress update of every particle, volumes and densities), through the
 //    derived class;
@@ -69,10 +68,11 @@
 
 #include <psmpm/app/application.h>
 #include <psmpm/base/phase_timer.h>
-#include <psmpm/simulator/point_accumulation.h>
+#include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
+#include <array>
 #include <benchmark/benchmark.h>
 #include <immintrin.h>
 #include <iostream>
@@ -192,57 +192,13 @@ namespace
       bm.counters["nnz"] = state.grid->mass_matrix(0).n_nonzero_elements();
   }
 
-  /// The particle loop of TransferScheme::particles_to_grid with
-  /// momentum_weight = 0, force_weight = 1 (MUSL), without assemble_mass.
-  void
-  accumulate(State       &state,
-             const double momentum_weight,
-             const double force_weight)
-  {
-    auto &grid = *state.grid;
-    grid.zero_cell_mass();
-    grid.zero_cell_rhs();
-    const auto        &particles  = state.particles;
-    const unsigned int n          = grid.dofs_per_cell;
-    auto              &cells      = grid.cell_arrays();
-    const bool         consistent = !cells.mass.empty();
-    double            *lumped     = cells.lumped.data();
-    double            *mass_mat   = cells.mass.data();
-    Tensor<1, 2>      *rhs        = cells.rhs.data();
-    for (std::size_t p = 0; p < particles.size(); ++p)
-      {
-        const unsigned int           base = particles.cell[p] * n;
-        const double                 m    = particles.mass[p];
-        const SymmetricTensor<2, 2> &s    = particles.stress[p];
-        const Tensor<1, 2>           momentum =
-          momentum_weight != 0 ? momentum_weight * m * particles.velocity[p] :
-                                           Tensor<1, 2>();
-        // The library's own per-point accumulation.
-        psmpm::Simulator::add_point<2>(n,
-                                       m,
-                                       momentum +
-                                         force_weight * m * state.gravity,
-                                       force_weight * particles.volume[p],
-                                       s,
-                                       &state.shape_values[p * n],
-                                       &state.shape_gradients[p * n],
-                                       lumped + base,
-                                       consistent ? mass_mat + base * n :
-                                                    nullptr,
-                                       rhs + base);
-      }
-  }
-
   void
   p2g_accumulate(benchmark::State &bm, const Config config)
   {
-    State &state  = state_of(scene(config, bm.range(0)));
-    double weight = 0;
+    State &state = state_of(scene(config, bm.range(0)));
     for (auto _ : bm)
       {
-        // The weights through an opaque value, as the library gets them.
-        benchmark::DoNotOptimize(weight);
-        accumulate(state, weight, 1.);
+        psmpm::Simulator::ParticleLoops::particles_to_cells(state, 0., 1.);
         benchmark::ClobberMemory();
       }
     set_counters(bm, state);
@@ -264,7 +220,7 @@ namespace
   assemble_mass(benchmark::State &bm, const Config config)
   {
     State &state = state_of(scene(config, bm.range(0)));
-    accumulate(state, 0., 1.);
+    psmpm::Simulator::ParticleLoops::particles_to_cells(state, 0., 1.);
     auto      &cells  = state.grid->cell_arrays();
     const auto mass   = cells.mass;
     const auto lumped = cells.lumped;
@@ -310,26 +266,8 @@ namespace
     const auto saved = state.particles;
     for (auto _ : bm)
       {
-        // MUSL::update_particle_velocities.
-        auto &grid = *state.grid;
-        grid.zero_cell_rhs();
-        auto               &particles = state.particles;
-        const unsigned int  n         = grid.dofs_per_cell;
-        const unsigned int *dofs      = grid.cell_dofs().data();
-        Tensor<1, 2>       *rhs       = grid.cell_arrays().rhs.data();
-        for (std::size_t p = 0; p < particles.size(); ++p)
-          {
-            const unsigned int base = particles.cell[p] * n;
-            const double      *phi  = &state.shape_values[p * n];
-            Tensor<1, 2>       a;
-            for (unsigned int k = 0; k < n; ++k)
-              a += phi[k] * state.grid_acceleration[dofs[base + k]];
-            particles.velocity[p] += state.dt * a;
-            const Tensor<1, 2> momentum =
-              particles.mass[p] * particles.velocity[p];
-            for (unsigned int k = 0; k < n; ++k)
-              rhs[base + k] += phi[k] * momentum;
-          }
+        // MUSL::update_particle_velocities without a reconstruction.
+        psmpm::Simulator::ParticleLoops::accelerate_particles(state, true);
         benchmark::ClobberMemory();
       }
     state.particles = saved;
@@ -341,29 +279,8 @@ namespace
   void
   interpolate_gradient(State &state, std::vector<Tensor<2, 2>> &increments)
   {
-    auto               &particles = state.particles;
-    const unsigned int  n         = state.grid->dofs_per_cell;
-    const unsigned int *dofs      = state.grid->cell_dofs().data();
-    const double        dt        = state.dt;
-    increments.resize(particles.size());
-    for (std::size_t p = 0; p < particles.size(); ++p)
-      {
-        const unsigned int  base = particles.cell[p] * n;
-        const double       *phi  = &state.shape_values[p * n];
-        const Tensor<1, 2> *grad = &state.shape_gradients[p * n];
-        Tensor<1, 2>        v;
-        Tensor<2, 2>        L;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            const Tensor<1, 2> &vk = state.grid_velocity[dofs[base + k]];
-            v += phi[k] * vk;
-            L += outer_product(vk, grad[k]);
-          }
-        increments[p]         = dt * L;
-        const Tensor<1, 2> du = dt * v;
-        particles.displacement[p] += du;
-        particles.position[p] += du;
-      }
+    using namespace psmpm::Simulator::ParticleLoops;
+    move_particles<2, VelocityUpdate::keep>(state, increments);
   }
 
   void
@@ -606,51 +523,40 @@ namespace
   }
 
   void
+  locate_hint(benchmark::State &bm, const Config config)
+  {
+    locate(bm, config, true);
+  }
+
+  void
+  locate_search(benchmark::State &bm, const Config config)
+  {
+    locate(bm, config, false);
+  }
+
+  /// Every phase of @p config as phase/name, in the order of the file's
+  /// header, then the whole step.
+  void
   register_phases(const char *name, const Config config)
   {
-    const std::string n(name);
-    benchmark::RegisterBenchmark(("p2g_accumulate/" + n).c_str(),
-                                 p2g_accumulate,
-                                 config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("p2g_with_assembly/" + n).c_str(),
-                                 p2g_with_assembly,
-                                 config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("assemble_mass/" + n).c_str(),
-                                 assemble_mass,
-                                 config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("solve/" + n).c_str(), solve, config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("g2p_velocity/" + n).c_str(),
-                                 g2p_velocity,
-                                 config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("g2p_gradient/" + n).c_str(),
-                                 g2p_gradient,
-                                 config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("material_update/" + n).c_str(),
-                                 material_update,
-                                 config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("locate_hint/" + n).c_str(),
-                                 locate,
-                                 config,
-                                 true)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("locate_search/" + n).c_str(),
-                                 locate,
-                                 config,
-                                 false)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("evaluate/" + n).c_str(), evaluate, config)
-      ->Apply(sizes);
-    benchmark::RegisterBenchmark(("do_time_step/" + n).c_str(),
-                                 do_time_step,
-                                 config)
-      ->Apply(sizes);
+    using Phase = void (*)(benchmark::State &, Config);
+    const std::array<std::pair<const char *, Phase>, 11> phases{
+      {{"p2g_accumulate", p2g_accumulate},
+       {"p2g_with_assembly", p2g_with_assembly},
+       {"assemble_mass", assemble_mass},
+       {"solve", solve},
+       {"g2p_velocity", g2p_velocity},
+       {"g2p_gradient", g2p_gradient},
+       {"material_update", material_update},
+       {"locate_hint", locate_hint},
+       {"locate_search", locate_search},
+       {"evaluate", evaluate},
+       {"do_time_step", do_time_step}}};
+    for (const auto &[phase, function] : phases)
+      benchmark::RegisterBenchmark((std::string(phase) + "/" + name).c_str(),
+                                   function,
+                                   config)
+        ->Apply(sizes);
   }
 } // namespace
 

@@ -38,7 +38,7 @@ namespace psmpm
         {
           p  = degree;
           fe = std::make_unique<FE_Q<2>>(p);
-          position.clear();
+          grid.clear();
         }
     }
 
@@ -82,40 +82,7 @@ namespace psmpm
             local_univariate[k][d] = j == 0 ? 0 : (j == p ? 1 : j + 1);
           }
 
-      // Grid lines: the distinct vertex coordinates (shared vertices are
-      // the same points, so exact comparison finds them).
-      for (unsigned int d = 0; d < 2; ++d)
-        {
-          lines[d].clear();
-          for (const auto &v : tria.get_vertices())
-            lines[d].push_back(v[d]);
-          std::sort(lines[d].begin(), lines[d].end());
-          lines[d].erase(std::unique(lines[d].begin(), lines[d].end()),
-                         lines[d].end());
-        }
-      const std::string not_cartesian =
-        "Basis/Type = bspline in 2D needs a Cartesian mesh (axis-parallel "
-        "rectangles on a tensor-product grid, Mesh/Type = cartesian)";
-      AssertThrow((lines[0].size() - 1) * (lines[1].size() - 1) ==
-                    tria.n_active_cells(),
-                  ExcMessage(not_cartesian + "."));
-      position.resize(tria.n_active_cells());
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          const Point<2> lo = cell->vertex(0), hi = cell->vertex(3);
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              const auto i =
-                std::lower_bound(lines[d].begin(), lines[d].end(), lo[d]) -
-                lines[d].begin();
-              AssertThrow(i + 1 < static_cast<long>(lines[d].size()) &&
-                            lines[d][i + 1] == hi[d],
-                          ExcMessage(not_cartesian + "; cell " +
-                                     std::to_string(cell->active_cell_index()) +
-                                     " is not one of its rectangles."));
-              position[cell->active_cell_index()][d] = i;
-            }
-        }
+      grid.reinit(tria, "Basis/Type = bspline in 2D");
       for (unsigned int d = 0; d < 2; ++d)
         ties[d] = univariate_ties(d);
     }
@@ -125,9 +92,9 @@ namespace psmpm
     {
       // The univariate space on the grid lines of direction d, cells
       // numbered left to right with vertex 0 on the left.
-      const unsigned int    n = lines[d].size() - 1;
+      const unsigned int    n = grid.lines(d).size() - 1;
       std::vector<Point<1>> vertices;
-      for (const double x : lines[d])
+      for (const double x : grid.lines(d))
         vertices.emplace_back(x);
       std::vector<dealii::CellData<1>> cells(n);
       for (unsigned int k = 0; k < n; ++k)
@@ -169,8 +136,9 @@ namespace psmpm
     std::array<unsigned int, 2>
     TensorBSpline::lattice(const unsigned int c, const unsigned int k) const
     {
-      return {{position[c][0] * p + local_lattice[k][0],
-               position[c][1] * p + local_lattice[k][1]}};
+      const auto &ij = grid.position(c);
+      return {
+        {ij[0] * p + local_lattice[k][0], ij[1] * p + local_lattice[k][1]}};
     }
 
     Point<2>
@@ -179,10 +147,11 @@ namespace psmpm
       Point<2> x;
       for (unsigned int d = 0; d < 2; ++d)
         {
+          const auto        &lines = grid.lines(d);
           const unsigned int i =
-            std::min<unsigned int>(IJ[d] / p, lines[d].size() - 2);
+            std::min<unsigned int>(IJ[d] / p, lines.size() - 2);
           const unsigned int a = IJ[d] - i * p;
-          x[d] = lines[d][i] + (lines[d][i + 1] - lines[d][i]) * a / p;
+          x[d]                 = lines[i] + (lines[i + 1] - lines[i]) * a / p;
         }
       return x;
     }
@@ -193,13 +162,13 @@ namespace psmpm
                             double            *values,
                             Tensor<1, 2>      *gradients) const
     {
-      AssertIndexRange(cell, position.size());
+      AssertIndexRange(cell, grid.n_cells());
       // The univariate Bernstein polynomials (and x- or y-derivatives) of
       // the cell's column and row, in FE_Q<1>(p) order.
       double       b[2][BSpline::max_degree + 1];
       Tensor<1, 1> db[2][BSpline::max_degree + 1];
       for (unsigned int d = 0; d < 2; ++d)
-        univariate[d].BSpline::evaluate(position[cell][d],
+        univariate[d].BSpline::evaluate(grid.position(cell)[d],
                                         Point<1>(x[d]),
                                         b[d],
                                         gradients != nullptr ? db[d] : nullptr);
@@ -240,12 +209,12 @@ namespace psmpm
     {
       if (p == 1)
         return;
-      AssertThrow(position.size() ==
+      AssertThrow(grid.n_cells() ==
                     dof_handler.get_triangulation().n_active_cells(),
                   ExcMessage("TensorBSpline::make_space_constraints: call "
                              "reinit() with this mesh first."));
-      const unsigned int columns = (lines[0].size() - 1) * p + 1;
-      const unsigned int rows    = (lines[1].size() - 1) * p + 1;
+      const unsigned int columns = (grid.lines(0).size() - 1) * p + 1;
+      const unsigned int rows    = (grid.lines(1).size() - 1) * p + 1;
       // The shared triangulation keeps every cell: every lattice point's
       // DoF is at hand.
       std::vector<types::global_dof_index> dof_at(columns * rows);
@@ -339,8 +308,8 @@ namespace psmpm
     TensorBSpline::cell_quadrature(const DoFHandler<2> &dof_handler,
                                    const unsigned int   cell) const
     {
-      AssertThrow(cell < position.size() &&
-                    position.size() ==
+      AssertThrow(cell < grid.n_cells() &&
+                    grid.n_cells() ==
                       dof_handler.get_triangulation().n_active_cells(),
                   ExcMessage("TensorBSpline::cell_quadrature: call reinit() "
                              "with this mesh first."));
@@ -349,8 +318,9 @@ namespace psmpm
       Tensor<1, 2> size;
       for (unsigned int d = 0; d < 2; ++d)
         {
-          lo[d]   = lines[d][position[cell][d]];
-          size[d] = lines[d][position[cell][d] + 1] - lo[d];
+          const unsigned int i = grid.position(cell)[d];
+          lo[d]                = grid.lines(d)[i];
+          size[d]              = grid.lines(d)[i + 1] - lo[d];
         }
       const QGauss<2>       reference(p + 1);
       std::vector<Point<2>> points(reference.size());

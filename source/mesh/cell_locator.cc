@@ -27,8 +27,6 @@ namespace psmpm
       }
     } // namespace
 
-
-
     template <int dim>
     void
     CellLocator<dim>::reinit(const Triangulation<dim> &tria)
@@ -42,84 +40,40 @@ namespace psmpm
         set_up_search(set_up_cells(tria));
     }
 
-
-
     template <int dim>
     void
     CellLocator<dim>::set_up_cartesian(const Triangulation<dim> &tria)
     {
-      const unsigned int n = tria.n_active_cells();
-      const std::string  not_cartesian =
-        "a mesh of quadrilaterals must be Cartesian (axis-parallel "
-        "rectangles on a tensor-product grid, Mesh/Type = cartesian)";
-      boxes.resize(n);
-      maps.clear();
-      neighbors.clear();
-      // Grid lines: the distinct vertex coordinates, merged within a
-      // relative tolerance (vertices shared by cells are the same
-      // points, so this only guards against input that nearly repeats).
-      for (unsigned int d = 0; d < dim; ++d)
+      // reinit() comes here for 2D meshes of quadrilaterals only.
+      if constexpr (dim == 2)
         {
-          auto &lines = grid_lines[d];
-          lines.clear();
-          for (const auto &v : tria.get_vertices())
-            lines.push_back(v[d]);
-          std::sort(lines.begin(), lines.end());
-          const double span = lines.back() - lines.front();
-          lines.erase(std::unique(lines.begin(),
-                                  lines.end(),
-                                  [span](const double a, const double b) {
-                                    return b - a <= 1e-12 * span;
-                                  }),
-                      lines.end());
-        }
-      const auto index = [this](const unsigned int d, const double x) {
-        return static_cast<unsigned int>(
-          std::lower_bound(grid_lines[d].begin(),
-                           grid_lines[d].end(),
-                           x - 1e-12 * (grid_lines[d].back() -
-                                        grid_lines[d].front())) -
-          grid_lines[d].begin());
-      };
-      const unsigned int nx = grid_lines[0].size() - 1;
-      const unsigned int ny = dim == 2 ? grid_lines[dim - 1].size() - 1 : 1;
-      AssertThrow(nx * ny == n,
-                  ExcMessage("CellLocator: " + not_cartesian + "; " +
-                             std::to_string(n) + " cells on " +
-                             std::to_string(nx) + " x " + std::to_string(ny) +
-                             " grid lines."));
-      cell_at.assign(n, invalid);
-      min_height = std::numeric_limits<double>::max();
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          const unsigned int c  = cell->active_cell_index();
-          const Point<dim>   lo = cell->vertex(0);
-          const Point<dim>   hi =
-            cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
-          std::array<unsigned int, dim> ij;
-          bool                          ok = true;
-          for (unsigned int d = 0; d < dim; ++d)
+          grid.reinit(tria, "CellLocator");
+          const unsigned int n  = tria.n_active_cells();
+          const unsigned int nx = grid.lines(0).size() - 1;
+          boxes.resize(n);
+          maps.clear();
+          neighbors.clear();
+          cell_at.assign(n, invalid);
+          min_height = std::numeric_limits<double>::max();
+          for (const auto &cell : tria.active_cell_iterators())
             {
-              ij[d] = index(d, lo[d]);
-              ok    = ok && ij[d] + 1 < grid_lines[d].size() &&
-                   index(d, hi[d]) == ij[d] + 1;
-              min_height = std::min(min_height, hi[d] - lo[d]);
+              const unsigned int c  = cell->active_cell_index();
+              const Point<dim>   lo = cell->vertex(0);
+              const Point<dim>   hi =
+                cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+              for (unsigned int d = 0; d < dim; ++d)
+                min_height = std::min(min_height, hi[d] - lo[d]);
+              const auto &ij              = grid.position(c);
+              cell_at[ij[1] * nx + ij[0]] = c;
+              boxes[c]                    = {{lo, hi}};
             }
-          // Every vertex on a corner of the box (lexicographic order).
-          for (unsigned int v = 0; ok && v < cell->n_vertices(); ++v)
-            for (unsigned int d = 0; d < dim; ++d)
-              ok = ok && cell->vertex(v)[d] == (((v >> d) & 1) ? hi[d] : lo[d]);
-          const unsigned int at = dim == 2 ? ij[dim - 1] * nx + ij[0] : ij[0];
-          AssertThrow(ok && cell_at[at] == invalid,
-                      ExcMessage("CellLocator: " + not_cartesian + "; cell " +
-                                 std::to_string(c) +
-                                 " is not one of its rectangles."));
-          cell_at[at] = c;
-          boxes[c]    = {{lo, hi}};
+        }
+      else
+        {
+          (void)tria;
+          Assert(false, ExcInternalError());
         }
     }
-
-
 
     template <int dim>
     unsigned int
@@ -128,7 +82,7 @@ namespace psmpm
       unsigned int at = 0, stride = 1;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const auto  &lines  = grid_lines[d];
+          const auto  &lines  = grid.lines(d);
           const double margin = tolerance * (lines.back() - lines.front());
           if (!(p[d] >= lines.front() - margin &&
                 p[d] <= lines.back() + margin))
@@ -143,8 +97,6 @@ namespace psmpm
         }
       return cell_at[at];
     }
-
-
 
     template <int dim>
     std::vector<BoundingBox<dim>>
@@ -192,8 +144,6 @@ namespace psmpm
         }
       return boxes;
     }
-
-
 
     template <int dim>
     void
@@ -251,8 +201,6 @@ namespace psmpm
         }
     }
 
-
-
     template <int dim>
     std::array<unsigned int, dim>
     CellLocator<dim>::bucket_of(const Point<dim> &p) const
@@ -267,8 +215,6 @@ namespace psmpm
         }
       return ij;
     }
-
-
 
     template <int dim>
     unsigned int
@@ -298,8 +244,6 @@ namespace psmpm
         }
     }
 
-
-
     template <int dim>
     unsigned int
     CellLocator<dim>::locate(const Point<dim> &p) const
@@ -310,8 +254,6 @@ namespace psmpm
         return invalid;
       return search(p);
     }
-
-
 
     template <int dim>
     unsigned int
@@ -338,8 +280,6 @@ namespace psmpm
         }
       return locate(p);
     }
-
-
 
     template class CellLocator<1>;
     template class CellLocator<2>;

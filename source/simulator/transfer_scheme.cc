@@ -4,7 +4,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <psmpm/base/format.h>
-#include <psmpm/simulator/point_accumulation.h>
+#include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
@@ -92,46 +92,16 @@ namespace psmpm
     {
       PhaseTimer::Scope t(timer, "particle to grid");
       auto             &grid = *state.grid;
-      grid.zero_cell_mass();
-      grid.zero_cell_rhs();
       if (state.reconstruction)
         {
+          grid.zero_cell_mass();
+          grid.zero_cell_rhs();
           state.reconstruction->mass_and_forces(state,
                                                 momentum_weight,
                                                 force_weight);
-          grid.assemble_mass();
-          return;
         }
-      const auto        &particles  = state.particles;
-      const unsigned int n          = grid.dofs_per_cell;
-      auto              &cells      = grid.cell_arrays();
-      const bool         consistent = !cells.mass.empty();
-      double            *lumped     = cells.lumped.data();
-      double            *mass_mat   = cells.mass.data();
-      Tensor<1, dim>    *rhs        = cells.rhs.data();
-      for (std::size_t p = 0; p < particles.size(); ++p)
-        {
-          const unsigned int             base = particles.cell[p] * n;
-          const double                   m    = particles.mass[p];
-          const SymmetricTensor<2, dim> &s    = particles.stress[p];
-          // Forces alone: no 0 * v term (which would carry a non-finite
-          // velocity into the forces).
-          const Tensor<1, dim> momentum =
-            momentum_weight != 0 ? momentum_weight * m * particles.velocity[p] :
-                                   Tensor<1, dim>();
-          const Tensor<1, dim> external = force_weight * m * state.gravity;
-          const double         volume   = force_weight * particles.volume[p];
-          add_point<dim>(n,
-                         m,
-                         momentum + external,
-                         volume,
-                         s,
-                         &state.shape_values[p * n],
-                         &state.shape_gradients[p * n],
-                         lumped + base,
-                         consistent ? mass_mat + base * n : nullptr,
-                         rhs + base);
-        }
+      else
+        ParticleLoops::particles_to_cells(state, momentum_weight, force_weight);
       grid.assemble_mass();
     }
 

@@ -8,6 +8,7 @@
 
 #include <psmpm/basis/bspline.h>
 #include <psmpm/basis/space.h>
+#include <psmpm/mesh/cartesian_grid.h>
 
 #include <array>
 #include <utility>
@@ -164,12 +165,10 @@ namespace psmpm
       std::vector<std::array<unsigned int, 2>> local_lattice;
       std::vector<std::array<unsigned int, 2>> local_univariate;
 
-      /// Grid lines in x and y.
-      std::array<std::vector<double>, 2> lines;
-
-      /// Grid position (column, row) of each cell; its geometry is that
-      /// of the grid lines (and of the univariate spaces' cells).
-      std::vector<std::array<unsigned int, 2>> position;
+      /// Grid lines in x and y and the grid position (column, row) of
+      /// each cell; a cell's geometry is that of its grid lines (and of
+      /// the univariate spaces' cells).
+      Mesh::CartesianGrid grid;
 
       /// Univariate ties per direction: ties[d][I] lists (K, w) with K
       /// free; empty for a free lattice line I.

@@ -7,6 +7,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/tria.h>
 
+#include <psmpm/mesh/cartesian_grid.h>
 #include <psmpm/mesh/triangle_geometry.h>
 
 #include <array>
@@ -107,11 +108,12 @@ namespace psmpm
       std::vector<SimplexMap<dim>> maps;
 
       /// Cartesian quadrilaterals: the lower and upper corner of each
-      /// cell, the grid lines in each direction, and the cell of grid
-      /// position (i, j) at cell_at[j * nx + i].
+      /// cell, the grid (lines and cell positions, the same as the
+      /// tensor-product B-splines'), and the cell of grid position (i, j)
+      /// at cell_at[j * nx + i].
       bool                                   quads = false;
       std::vector<std::array<Point<dim>, 2>> boxes;
-      std::array<std::vector<double>, dim>   grid_lines;
+      CartesianGrid                          grid;
       std::vector<unsigned int>              cell_at;
       /// neighbors[c][k]: the cell across the face opposite vertex k.
       std::vector<std::array<unsigned int, dim + 1>> neighbors;

@@ -5,6 +5,7 @@
 
 #include <psmpm/base/format.h>
 #include <psmpm/mesh/triangle_geometry.h>
+#include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
 #include <algorithm>
@@ -263,35 +264,10 @@ namespace psmpm
                          StabilityMonitor &monitor,
                          PhaseTimer       &timer)
         {
-          PhaseTimer::Scope   t(timer, "update");
-          auto               &particles = state.particles;
-          const unsigned int  n         = state.grid->dofs_per_cell;
-          const unsigned int *dofs      = state.grid->cell_dofs().data();
-          const double        dt        = state.dt;
-          increments.resize(particles.size());
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int    base = particles.cell[p] * n;
-              const double         *phi  = &state.shape_values[p * n];
-              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
-              Tensor<1, dim>        v;
-              Tensor<2, dim>        L;
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  const Tensor<1, dim> &uk =
-                    state.grid_velocity[dofs[base + k]];
-                  v += phi[k] * uk;
-                  L += outer_product(uk, grad[k]);
-                }
-              // sum_a x_a,k+1 N_a,k(x_p) = x_p + sum_a dt u_a N_a,k(x_p)
-              // (the functions reproduce x); the increment form keeps the
-              // round-off relative to the step.
-              const Tensor<1, dim> du = dt * v;
-              particles.velocity[p]   = v;
-              particles.displacement[p] += du;
-              particles.position[p] += du;
-              increments[p] = dt * L;
-            }
+          PhaseTimer::Scope t(timer, "update");
+          // v_p = sum_a u_a N_a,k(x_p) = (x_p,k+1 - x_p,k) / dt_k.
+          using namespace ParticleLoops;
+          move_particles<dim, VelocityUpdate::grid>(state, increments);
           this->update_material(state, increments, volume_ratio, monitor);
         }
 

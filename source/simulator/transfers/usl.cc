@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
 namespace psmpm
@@ -46,32 +47,9 @@ namespace psmpm
                          StabilityMonitor &monitor,
                          PhaseTimer       &timer)
         {
-          PhaseTimer::Scope   t(timer, "update");
-          auto               &particles = state.particles;
-          const unsigned int  n         = state.grid->dofs_per_cell;
-          const unsigned int *dofs      = state.grid->cell_dofs().data();
-          const double        dt        = state.dt;
-          increments.resize(particles.size());
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int    base = particles.cell[p] * n;
-              const double         *phi  = &state.shape_values[p * n];
-              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
-              Tensor<1, dim>        v, a;
-              Tensor<2, dim>        L;
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  const unsigned int i = dofs[base + k];
-                  v += phi[k] * state.grid_velocity[i];
-                  a += phi[k] * state.grid_acceleration[i];
-                  L += outer_product(state.grid_velocity[i], grad[k]);
-                }
-              particles.velocity[p] += dt * a;
-              const Tensor<1, dim> du = dt * v;
-              particles.displacement[p] += du;
-              particles.position[p] += du;
-              increments[p] = dt * L;
-            }
+          PhaseTimer::Scope t(timer, "update");
+          using namespace ParticleLoops;
+          move_particles<dim, VelocityUpdate::flip>(state, increments);
           this->update_material(state, increments, volume_ratio, monitor);
         }
 

@@ -1,0 +1,156 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/simulator/particle_loops.h>
+#include <psmpm/simulator/point_accumulation.h>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    namespace ParticleLoops
+    {
+      template <int dim>
+      void
+      particles_to_cells(State<dim>  &state,
+                         const double momentum_weight,
+                         const double force_weight)
+      {
+        auto &grid = *state.grid;
+        grid.zero_cell_mass();
+        grid.zero_cell_rhs();
+        const auto        &particles  = state.particles;
+        const unsigned int n          = grid.dofs_per_cell;
+        auto              &cells      = grid.cell_arrays();
+        const bool         consistent = !cells.mass.empty();
+        double            *lumped     = cells.lumped.data();
+        double            *mass_mat   = cells.mass.data();
+        Tensor<1, dim>    *rhs        = cells.rhs.data();
+        for (std::size_t p = 0; p < particles.size(); ++p)
+          {
+            const unsigned int             base = particles.cell[p] * n;
+            const double                   m    = particles.mass[p];
+            const SymmetricTensor<2, dim> &s    = particles.stress[p];
+            // Forces alone: no 0 * v term (which would carry a non-finite
+            // velocity into the forces).
+            const Tensor<1, dim> momentum =
+              momentum_weight != 0 ?
+                momentum_weight * m * particles.velocity[p] :
+                Tensor<1, dim>();
+            const Tensor<1, dim> external = force_weight * m * state.gravity;
+            const double         volume   = force_weight * particles.volume[p];
+            add_point<dim>(n,
+                           m,
+                           momentum + external,
+                           volume,
+                           s,
+                           &state.shape_values[p * n],
+                           &state.shape_gradients[p * n],
+                           lumped + base,
+                           consistent ? mass_mat + base * n : nullptr,
+                           rhs + base);
+          }
+      }
+
+
+
+      template <int dim>
+      void
+      accelerate_particles(State<dim> &state, const bool momentum_to_grid)
+      {
+        auto &grid = *state.grid;
+        if (momentum_to_grid)
+          grid.zero_cell_rhs();
+        auto               &particles = state.particles;
+        const unsigned int  n         = grid.dofs_per_cell;
+        const unsigned int *dofs      = grid.cell_dofs().data();
+        Tensor<1, dim>     *rhs       = grid.cell_arrays().rhs.data();
+        for (std::size_t p = 0; p < particles.size(); ++p)
+          {
+            const unsigned int base = particles.cell[p] * n;
+            const double      *phi  = &state.shape_values[p * n];
+            Tensor<1, dim>     a;
+            for (unsigned int k = 0; k < n; ++k)
+              a += phi[k] * state.grid_acceleration[dofs[base + k]];
+            particles.velocity[p] += state.dt * a;
+            if (!momentum_to_grid)
+              continue;
+            const Tensor<1, dim> momentum =
+              particles.mass[p] * particles.velocity[p];
+            for (unsigned int k = 0; k < n; ++k)
+              rhs[base + k] += phi[k] * momentum;
+          }
+      }
+
+
+
+      template <int dim, VelocityUpdate velocity_update>
+      void
+      move_particles(State<dim> &state, std::vector<Tensor<2, dim>> &increments)
+      {
+        auto               &particles = state.particles;
+        const unsigned int  n         = state.grid->dofs_per_cell;
+        const unsigned int *dofs      = state.grid->cell_dofs().data();
+        const double        dt        = state.dt;
+        increments.resize(particles.size());
+        for (std::size_t p = 0; p < particles.size(); ++p)
+          {
+            const unsigned int    base = particles.cell[p] * n;
+            const double         *phi  = &state.shape_values[p * n];
+            const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
+            Tensor<1, dim>        v, a;
+            Tensor<2, dim>        L; // velocity gradient, L_ij = dv_i/dx_j
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                const unsigned int    i  = dofs[base + k];
+                const Tensor<1, dim> &vi = state.grid_velocity[i];
+                v += phi[k] * vi;
+                if constexpr (velocity_update == VelocityUpdate::flip)
+                  a += phi[k] * state.grid_acceleration[i];
+                L += outer_product(vi, grad[k]);
+              }
+            if constexpr (velocity_update == VelocityUpdate::flip)
+              particles.velocity[p] += dt * a;
+            else if constexpr (velocity_update == VelocityUpdate::grid)
+              particles.velocity[p] = v;
+            // OTM: sum_a x_a,k+1 N_a,k(x_p) = x_p + dt sum_a u_a N_a,k(x_p)
+            // (the functions reproduce x); the increment form keeps the
+            // round-off relative to the step.
+            increments[p]           = dt * L;
+            const Tensor<1, dim> du = dt * v;
+            particles.displacement[p] += du;
+            particles.position[p] += du;
+          }
+      }
+
+
+
+      template void
+      particles_to_cells(State<1> &, const double, const double);
+      template void
+      particles_to_cells(State<2> &, const double, const double);
+      template void
+      accelerate_particles(State<1> &, const bool);
+      template void
+      accelerate_particles(State<2> &, const bool);
+      template void
+      move_particles<1, VelocityUpdate::keep>(State<1> &,
+                                              std::vector<Tensor<2, 1>> &);
+      template void
+      move_particles<2, VelocityUpdate::keep>(State<2> &,
+                                              std::vector<Tensor<2, 2>> &);
+      template void
+      move_particles<1, VelocityUpdate::flip>(State<1> &,
+                                              std::vector<Tensor<2, 1>> &);
+      template void
+      move_particles<2, VelocityUpdate::flip>(State<2> &,
+                                              std::vector<Tensor<2, 2>> &);
+      template void
+      move_particles<1, VelocityUpdate::grid>(State<1> &,
+                                              std::vector<Tensor<2, 1>> &);
+      template void
+      move_particles<2, VelocityUpdate::grid>(State<2> &,
+                                              std::vector<Tensor<2, 2>> &);
+    } // namespace ParticleLoops
+  }   // namespace Simulator
+} // namespace psmpm
