@@ -316,6 +316,10 @@ namespace psmpm
       setup_particles();
       state.evaluate_shape_functions();
       transfer->initialize(state);
+      if (!transfer->carries_affine())
+        std::fill(state.particles.affine.begin(),
+                  state.particles.affine.end(),
+                  Tensor<2, dim>());
       if (state.reconstruction)
         state.reconstruction->initialize(state);
     }

@@ -74,6 +74,17 @@ namespace psmpm
         return false;
       }
 
+      /// Whether the scheme transfers and updates the particles' affine
+      /// matrices C_p (APIC). The initial conditions set C_p = grad v for
+      /// such schemes; for the others the simulator clears it, since they
+      /// never update it and the angular momentum statistic would
+      /// otherwise report a stale affine part.
+      virtual bool
+      carries_affine() const
+      {
+        return false;
+      }
+
       /// Smallest cell height (triangle height, line length in 1D) of the
       /// grid the scheme computes on now: the length of the time step
       /// bound. The fixed mesh's by default; a scheme whose grid moves

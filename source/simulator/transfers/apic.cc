@@ -103,6 +103,12 @@ namespace psmpm
             "the projection cannot).");
         }
 
+        bool
+        carries_affine() const override
+        {
+          return true;
+        }
+
         /// @p prm is inside subsection "Transfer".
         explicit APIC(ParameterHandler &prm)
           : matrix_choice(prm.get("Affine matrix"))
