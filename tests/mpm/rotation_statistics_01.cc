@@ -51,11 +51,12 @@ main(int argc, char **argv)
                                           "Mesh/Blocks x=4",
                                           "Mesh/Blocks y=4"});
       Postprocess::RotationStatistics<2> rotation;
-      const auto  &particles = solver->get_particles();
+      const auto                        &particles = solver->get_particles();
       const double h0 = rotation.compute(solver->get_state()).angular_momentum;
       const double p0 = particle_sum(particles);
-      out << scheme << ": reported / particle sum at the start = "
-          << std::setprecision(4) << h0 / p0 << std::endl;
+      out << scheme
+          << ": reported / particle sum at the start = " << std::setprecision(4)
+          << h0 / p0 << std::endl;
       if (scheme == "apic")
         {
           PSMPM_CHECK(out, h0 > p0 * (1 + 1e-3));

@@ -20,6 +20,7 @@
 #include <psmpm/solver/dense_cholesky.h>
 #include <psmpm/solver/mass_strategy.h>
 #include <psmpm/solver/p_multigrid.h>
+#include <psmpm/solver/vertex_block_jacobi.h>
 
 #include <array>
 #include <memory>
@@ -57,7 +58,7 @@ namespace psmpm
         std::string  type           = "partially lumped";
         double       tolerance      = 1e-12;
         unsigned int max_iterations = 1000;
-        std::string  preconditioner = "jacobi";
+        std::string  preconditioner = "block jacobi";
         double       threshold      = 0.05;
         /// Serial systems with at most this many DoFs are solved by a
         /// dense Cholesky factorization instead of CG (0: never).
@@ -429,6 +430,7 @@ namespace psmpm
       std::vector<int>                                      cell_slots;
       unsigned int                                          generation = 0;
       std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
+      std::array<VertexBlockJacobi, dim>                    block_jacobi;
       std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
       /// Preconditioner = pmg. Serial deal.II matrices, as PMultigrid
       /// takes: the prolongation P (shared pattern) and per component P_d,

@@ -1,0 +1,141 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/solver/vertex_block_jacobi.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <array>
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Solver
+  {
+    namespace
+    {
+      constexpr unsigned int max_block = 8;
+
+      /// In-place Gauss-Jordan inverse of the n x n row-major @p a without
+      /// pivoting (the blocks are symmetric positive definite diagonal
+      /// blocks of a mass matrix); false if a pivot is not positive
+      /// relative to the block's largest diagonal entry.
+      bool
+      invert_in_place(double *a, const unsigned int n)
+      {
+        double scale = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          scale = std::max(scale, std::abs(a[i * n + i]));
+        for (unsigned int p = 0; p < n; ++p)
+          {
+            const double pivot = a[p * n + p];
+            if (!(pivot > 1e-12 * scale))
+              return false;
+            const double inverse_pivot = 1. / pivot;
+            for (unsigned int j = 0; j < n; ++j)
+              a[p * n + j] *= inverse_pivot;
+            a[p * n + p] = inverse_pivot;
+            for (unsigned int i = 0; i < n; ++i)
+              if (i != p)
+                {
+                  const double f = a[i * n + p];
+                  for (unsigned int j = 0; j < n; ++j)
+                    a[i * n + j] -= f * a[p * n + j];
+                  a[i * n + p] = -f * inverse_pivot;
+                }
+          }
+        for (unsigned int i = 0; i < n * n; ++i)
+          if (!std::isfinite(a[i]))
+            return false;
+        return true;
+      }
+    } // namespace
+
+    void
+    VertexBlockJacobi::initialize(const TrilinosWrappers::SparseMatrix &A,
+                                  const unsigned int block_size_in)
+    {
+      AssertThrow(block_size_in >= 1 && block_size_in <= max_block,
+                  ExcMessage("VertexBlockJacobi: block size " +
+                             std::to_string(block_size_in) + " outside 1.." +
+                             std::to_string(max_block)));
+      const Epetra_CrsMatrix &crs = A.trilinos_matrix();
+      block_size                  = block_size_in;
+      n_rows                      = crs.NumMyRows();
+      AssertThrow(n_rows % block_size == 0,
+                  ExcMessage("VertexBlockJacobi: " + std::to_string(n_rows) +
+                             " owned rows are not whole blocks of " +
+                             std::to_string(block_size)));
+      const unsigned int n = block_size;
+      inverse.assign(std::size_t(n_rows) * n, 0.);
+      fallbacks = 0;
+      int    *offsets, *columns;
+      double *entries;
+      crs.ExtractCrsDataPointers(offsets, columns, entries);
+      std::array<int, max_block>                local_column;
+      std::array<double, max_block * max_block> block;
+      for (unsigned int b = 0; b < n_rows / n; ++b)
+        {
+          const unsigned int first_row = b * n;
+          const int          first_gid = crs.GRID(first_row);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              AssertThrow(crs.GRID(first_row + i) == first_gid + int(i),
+                          ExcMessage("VertexBlockJacobi: the DoFs of a "
+                                     "vertex are not numbered consecutively"));
+              local_column[i] = crs.LCID(first_gid + int(i));
+            }
+          block.fill(0.);
+          for (unsigned int i = 0; i < n; ++i)
+            for (int k = offsets[first_row + i]; k < offsets[first_row + i + 1];
+                 ++k)
+              for (unsigned int j = 0; j < n; ++j)
+                if (columns[k] == local_column[j])
+                  block[i * n + j] += entries[k];
+          double *const out = &inverse[std::size_t(first_row) * n];
+          std::copy(block.begin(), block.begin() + n * n, out);
+          if (!invert_in_place(out, n))
+            {
+              ++fallbacks;
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  out[i * n + j] =
+                    (i != j               ? 0. :
+                     block[i * n + i] > 0 ? 1. / block[i * n + i] :
+                                            1.);
+            }
+        }
+    }
+
+    void
+    VertexBlockJacobi::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                             const TrilinosWrappers::MPI::Vector &src) const
+    {
+      AssertDimension(src.locally_owned_size(), n_rows);
+      AssertDimension(dst.locally_owned_size(), n_rows);
+      const double *const s = src.begin();
+      double *const       d = dst.begin();
+      const unsigned int  n = block_size;
+      const double       *a = inverse.data();
+      if (n == 3)
+        {
+          // The Powell-Sabin case, unrolled.
+          for (unsigned int r = 0; r < n_rows; r += 3, a += 9)
+            {
+              const double s0 = s[r], s1 = s[r + 1], s2 = s[r + 2];
+              d[r]     = a[0] * s0 + a[1] * s1 + a[2] * s2;
+              d[r + 1] = a[3] * s0 + a[4] * s1 + a[5] * s2;
+              d[r + 2] = a[6] * s0 + a[7] * s1 + a[8] * s2;
+            }
+          return;
+        }
+      for (unsigned int r = 0; r < n_rows; r += n, a += n * n)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            double v = 0;
+            for (unsigned int j = 0; j < n; ++j)
+              v += a[i * n + j] * s[r + j];
+            d[r + i] = v;
+          }
+    }
+  } // namespace Solver
+} // namespace psmpm
