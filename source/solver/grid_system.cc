@@ -67,7 +67,7 @@ namespace psmpm
         Patterns::Selection("jacobi|block jacobi|amg|pmg"),
         "Preconditioner for CG. block jacobi: the inverse of each vertex's "
         "diagonal block (Powell-Sabin: the 3 x 3 block of the three "
-        "functions of a vertex, which overlap most; 3x fewer iterations "
+        "functions of a vertex, which overlap most; 1.5-3x fewer iterations "
         "than jacobi on filled meshes); for spaces with one DoF per vertex "
         "(P1, B-splines) the same as jacobi (point Jacobi). pmg: one "
         "p-multigrid V-cycle, Powell-Sabin "
