@@ -316,10 +316,6 @@ namespace psmpm
       setup_particles();
       state.evaluate_shape_functions();
       transfer->initialize(state);
-      if (!transfer->carries_affine())
-        std::fill(state.particles.affine.begin(),
-                  state.particles.affine.end(),
-                  Tensor<2, dim>());
       if (state.reconstruction)
         state.reconstruction->initialize(state);
     }
@@ -484,8 +480,12 @@ namespace psmpm
         }
       // The affine transfers start from the initial velocity gradient
       // (C_p = grad v): fourth-order differences with h = 1e-4 are exact
-      // to round-off for the affine fields they must carry. Without Bodies
-      // one expression for all particles; with them, each body's own.
+      // to round-off for the affine fields they must carry. The others
+      // never update C_p, so it stays zero for them (a stale C_p would
+      // enter the reported angular momentum). The transfer is final here
+      // (setup_space_and_grid). Without Bodies one expression for all
+      // particles; with them, each body's own.
+      const bool affine       = transfer->carries_affine();
       const auto set_velocity = [&](const std::string &expression,
                                     const std::string &entry,
                                     const unsigned int body) {
@@ -500,8 +500,9 @@ namespace psmpm
                   {
                     particles.velocity[i][d] =
                       velocity.value(particles.position[i], d);
-                    particles.affine[i][d] =
-                      velocity.gradient(particles.position[i], d);
+                    if (affine)
+                      particles.affine[i][d] =
+                        velocity.gradient(particles.position[i], d);
                   }
           }
         catch (const std::exception &e)
