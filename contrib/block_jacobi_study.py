@@ -5,7 +5,8 @@ of contrib/particle_mass_solvers.py (consistent mass, CG to 1e-8, every
 system through CG) and the closed throughput bar with the default mass
 (partially lumped, CG to 1e-12, 40 steps). Per case and preconditioner:
 mean CG iterations per step, the largest CG condition estimate of the run,
-CPU seconds (user + sys of the whole run, /usr/bin/time) and the relative
+CPU and wall seconds of the whole run (user + sys, and elapsed, from one
+/usr/bin/time) and the relative
 difference of the final total energy between the two. Prints a markdown
 table (doc/performance.md, "Block Jacobi").
 
@@ -25,27 +26,29 @@ THROUGHPUT = ("ps throughput bar, closed, default mass",
 
 def measure(case, preconditioner):
     name, prm, degree, sets = case
-    rows, summary, cpu, _ = pms.run(prm, sets, preconditioner)
+    rows, summary, cpu, wall = pms.run(prm, sets, preconditioner)
     its = [float(r["cg_iterations"]) for r in rows]
     cond = [float(r["condition_number"]) for r in rows
             if r.get("condition_number", "-") not in ("-", "nan")]
     energy = float(rows[-1]["total_energy"])
     return (sum(its) / max(len(its), 1), max(cond) if cond else 0.0, cpu,
-            energy, summary["status"])
+            energy, summary["status"], wall)
 
 
 def main():
     cases = [c for c in pms.CASES if c[2] == 2] + [THROUGHPUT]
     print("| case | mean CG its/step jacobi / block | largest cond. "
-          "estimate jacobi / block | CPU s jacobi / block | final energy "
+          "estimate jacobi / block | CPU s jacobi / block | wall s jacobi / "
+          "block | final energy "
           "rel. difference | status |")
-    print("|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|")
     for case in cases:
         j = measure(case, "jacobi")
         b = measure(case, "block jacobi")
         diff = abs(b[3] - j[3]) / max(abs(j[3]), 1e-300)
         print(f"| {case[0]} | {j[0]:.1f} / {b[0]:.1f} | {j[1]:.3g} / "
-              f"{b[1]:.3g} | {j[2]:.2f} / {b[2]:.2f} | {diff:.1e} | "
+              f"{b[1]:.3g} | {j[2]:.2f} / {b[2]:.2f} | {j[5]:.2f} / {b[5]:.2f} | "
+              f"{diff:.1e} | "
               f"{j[4]} / {b[4]} |", flush=True)
 
 
