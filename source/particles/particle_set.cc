@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <type_traits>
 
 namespace psmpm
 {
@@ -133,10 +134,32 @@ namespace psmpm
 
     template <int dim>
     void
+    ParticleSet<dim>::set_capacity(const std::size_t n)
+    {
+      const std::size_t target = std::max(n, size());
+      const auto        resize = [](auto &array, const std::size_t c) {
+        if (array.capacity() == c)
+          return;
+        std::remove_reference_t<decltype(array)> copy;
+        copy.reserve(c);
+        copy.assign(array.begin(), array.end());
+        array.swap(copy);
+      };
+      for_each_array(*this, [&](auto &array) { resize(array, target); });
+      resize(state, target * n_state());
+    }
+
+
+
+    template <int dim>
+    void
     ParticleSet<dim>::unpack(const std::vector<double> &buffer)
     {
       const unsigned int n = n_packed();
       AssertThrow(buffer.size() % n == 0, ExcInternalError());
+      const std::size_t needed = size() + buffer.size() / n;
+      if (needed > capacity())
+        set_capacity(needed + needed / 8);
       for (std::size_t start = 0; start < buffer.size(); start += n)
         {
           const double *in          = buffer.data() + start;

@@ -12,7 +12,7 @@ namespace psmpm
     EnergyStatistics<dim>::compute(const Simulator::State<dim> &state) const
     {
       const auto &particles = state.particles;
-      energy_density.resize(particles.size());
+      Particles::resize_per_particle(energy_density, particles);
       state.materials.energy_density(particles, energy_density.data());
       Energies<dim> e;
       for (std::size_t p = 0; p < particles.size(); ++p)
@@ -35,7 +35,7 @@ namespace psmpm
     template <int dim>
     void
     EnergyStatistics<dim>::add_columns(const Energies<dim> &e,
-                                       StatisticsTable        &statistics)
+                                       StatisticsTable     &statistics)
     {
       statistics.add_value("kinetic_energy", e.kinetic);
       statistics.add_value("strain_energy", e.strain);

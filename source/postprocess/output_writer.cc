@@ -401,25 +401,34 @@ namespace psmpm
 
 
       /**
-       * The VTU piece of @p n points, each a VTK_VERTEX cell, at
-       * @p position(i) (a Point<dim>), with the point data @p names /
-       * @p ranges, component k of point i being @p value(i, k): the file
-       * DataOutBase::write_vtu() writes for one Patch<0, dim> per point
-       * (its header and footer, the same arrays in the same order, Float32
-       * values, vectors padded to 3 and tensors to 3 x 3 components, row
-       * by row), written array by array straight from the values.
+       * The VTU piece of @p n_cells cells of @p vertices_per_cell points
+       * each (VTK cell type @p vtk_type; points not shared, cell i is the
+       * points i * vertices_per_cell, ...), point j at @p position(j) (a
+       * Point<dim>), with the point data @p names / @p ranges, component k
+       * of point j being @p value(j, k): the file DataOutBase::write_vtu()
+       * writes for one Patch<0, dim> per point (VTK_VERTEX, one vertex) or
+       * one simplex Patch<2, 2> with n_subdivisions = 1 per triangle
+       * (VTK_TRIANGLE, three) -- its header and footer, the same arrays in
+       * the same order, Float32 values, vectors padded to 3 and tensors to
+       * 3 x 3 components, row by row -- written array by array straight
+       * from the values, without the patches (for particles about 336 B
+       * each, for a triangle more than 1 kB; a Powell-Sabin grid of
+       * 1.28M cells drawn as 16 sub-triangles each ran out of 24 GB).
        */
       template <int dim, typename Position, typename Value>
       void
-      write_point_vtu(std::ostream                   &out,
-                      const std::size_t               n,
+      write_cells_vtu(std::ostream                   &out,
+                      const std::size_t               n_cells,
+                      const unsigned int              vertices_per_cell,
+                      const std::uint8_t              vtk_type,
                       const std::vector<std::string> &names,
                       const Ranges                   &ranges,
                       const Position                 &position,
                       const Value                    &value)
       {
+        const std::size_t n = n_cells * vertices_per_cell;
         AssertThrow(n < std::size_t(std::numeric_limits<std::int32_t>::max()),
-                    ExcMessage("psmpm: too many particles for one VTU piece "
+                    ExcMessage("psmpm: too many points for one VTU piece "
                                "(Int32 connectivity)."));
         const DataOutBase::VtkFlags flags = vtk_flags();
         CompressedArrayWriter       writer(Z_BEST_SPEED); // as best_speed
@@ -440,8 +449,8 @@ namespace psmpm
         };
 
         DataOutBase::write_vtu_header(out, flags);
-        out << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n
-            << "\" >\n";
+        out << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\""
+            << n_cells << "\" >\n";
         out << "  <Points>\n";
         array(
           "type=\"Float32\" NumberOfComponents=\"3\"",
@@ -457,16 +466,27 @@ namespace psmpm
           1,
           [](const std::size_t i, unsigned int) { return i; },
           std::int32_t());
-        array(
+        // The cells' arrays have n_cells entries: array() runs over n.
+        const auto cell_array = [&](const std::string &attributes,
+                                    const auto         entry,
+                                    const auto         as_type) {
+          using T = decltype(as_type);
+          out << "    <DataArray " << attributes << " format=\"binary\">\n";
+          writer.begin(out, n_cells * sizeof(T));
+          for (std::size_t i = 0; i < n_cells; ++i)
+            writer.push(static_cast<T>(entry(i)));
+          writer.end();
+          out << "\n    </DataArray>\n";
+        };
+        cell_array(
           "type=\"Int32\" Name=\"offsets\"",
-          1,
-          [](const std::size_t i, unsigned int) { return i + 1; },
+          [vertices_per_cell](const std::size_t i) {
+            return (i + 1) * vertices_per_cell;
+          },
           std::int32_t());
-        // VTK_VERTEX
-        array(
+        cell_array(
           "type=\"UInt8\" Name=\"types\"",
-          1,
-          [](std::size_t, unsigned int) { return 1; },
+          [vtk_type](std::size_t) { return vtk_type; },
           std::uint8_t());
         out << "  </Cells>\n";
 
@@ -851,7 +871,7 @@ namespace psmpm
             return;
           }
       // Straight from the particle arrays, not through one deal.II Patch
-      // per particle (see write_point_vtu()).
+      // per particle (see write_cells_vtu()).
       particle_records.emplace_back(
         time,
         write_pieces(
@@ -861,9 +881,11 @@ namespace psmpm
           names,
           ranges,
           [&](std::ostream &out) {
-            write_point_vtu<dim>(
+            write_cells_vtu<dim>(
               out,
               particles.size(),
+              1,
+              1, // VTK_VERTEX
               names,
               ranges,
               [&](const std::size_t i) -> const Point<dim> & {
@@ -917,8 +939,13 @@ namespace psmpm
                     std::vector<std::array<unsigned int, 3>>());
 
       std::vector<DataOutBase::Patch<dim, dim>> patches;
-      std::vector<double>                       values;
-      std::vector<unsigned int>                 cells;
+      // Triangles are written without patches (write_cells_vtu()): the
+      // drawn lattice points and their field values, cell after cell.
+      std::vector<Point<dim>>   lattice_drawn;
+      std::vector<double>       lattice_data;
+      std::size_t               n_triangle_cells = 0;
+      std::vector<double>       values;
+      std::vector<unsigned int> cells;
       // Field values at the lattice points of one cell, point-major.
       std::vector<double> data;
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1020,24 +1047,22 @@ namespace psmpm
                 patches.push_back(std::move(patch));
               }
             else
-              // Simplex patches with n_subdivisions > 1 are not
-              // implemented in deal.II 9.4 (compute_sizes() asserts
-              // n_subdivisions == 1), so one patch per sub-triangle.
-              for (const auto &t : triangles)
-                {
-                  DataOutBase::Patch<dim, dim> patch;
-                  patch.reference_cell = ReferenceCells::get_simplex<dim>();
-                  patch.n_subdivisions = 1;
-                  patch.patch_index    = patches.size();
-                  patch.data.reinit(names.size(), 3);
-                  for (unsigned int k = 0; k < 3; ++k)
-                    {
-                      patch.vertices[k] = drawn[t[k]];
-                      fill(patch, k, t[k]);
-                    }
-                  patches.push_back(std::move(patch));
-                }
+              {
+                // Drawn as s^2 triangles of three unshared points each, as
+                // deal.II 9.4 writes one simplex patch per sub-triangle
+                // (it has no simplex patches with n_subdivisions > 1).
+                lattice_drawn.insert(lattice_drawn.end(),
+                                     drawn.begin(),
+                                     drawn.end());
+                lattice_data.insert(lattice_data.end(),
+                                    data.begin(),
+                                    data.end());
+                ++n_triangle_cells;
+              }
           }
+      AssertThrow(patches.empty() || n_triangle_cells == 0,
+                  ExcMessage("psmpm: grid output of a mesh with both "
+                             "triangles and rectangles is not supported."));
 
       grid_records.emplace_back(
         time,
@@ -1048,7 +1073,38 @@ namespace psmpm
           names,
           ranges,
           [&](std::ostream &out) {
-            DataOutBase::write_vtu(patches, names, ranges, vtk_flags(), out);
+            if (dim != 2 || !patches.empty())
+              {
+                DataOutBase::write_vtu(patches,
+                                       names,
+                                       ranges,
+                                       vtk_flags(),
+                                       out);
+                return;
+              }
+            // Point j: corner j % 3 of sub-triangle (j / 3) % T of the
+            // (j / 3T)-th cell, i.e. one of the cell's L lattice points.
+            const std::size_t T      = triangles.size();
+            const std::size_t L      = (s + 1) * (s + 2) / 2;
+            const std::size_t n_data = names.size();
+            const auto        point  = [&](const std::size_t j) {
+              const std::size_t cell = j / (3 * T);
+              const std::size_t r    = j % (3 * T);
+              return cell * L + triangles[r / 3][r % 3];
+            };
+            write_cells_vtu<dim>(
+              out,
+              n_triangle_cells * T,
+              3,
+              5, // VTK_TRIANGLE
+              names,
+              ranges,
+              [&](const std::size_t j) -> const Point<dim> & {
+                return lattice_drawn[point(j)];
+              },
+              [&](const std::size_t j, const unsigned int k) {
+                return lattice_data[point(j) * n_data + k];
+              });
           },
           comm));
       write_pvd("grid", grid_records);

@@ -8,10 +8,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <regex>
 #include <unistd.h>
@@ -122,6 +124,63 @@ namespace psmpm
         particles.unpack(packed);
         for (std::size_t j = 0; j < cells.size(); ++j)
           particles.cell[first + j] = static_cast<unsigned int>(cells[j]);
+      }
+
+      /// Every rank's @p local concatenated on rank 0, in rank order (empty
+      /// elsewhere). Raw MPI_Gatherv: Utilities::MPI::gather would serialize
+      /// and gzip the buffers (5.5 s of a 980,000-particle checkpoint on two
+      /// ranks against 1.8 s on one).
+      std::vector<double>
+      gather_doubles(const std::vector<double> &local, MPI_Comm comm)
+      {
+        const unsigned int  rank    = Utilities::MPI::this_mpi_process(comm);
+        const unsigned int  n_ranks = Utilities::MPI::n_mpi_processes(comm);
+        const std::uint64_t my_size = local.size();
+        std::vector<std::uint64_t> sizes(rank == 0 ? n_ranks : 0);
+        int                        ierr = MPI_Gather(&my_size,
+                              1,
+                              MPI_UINT64_T,
+                              sizes.data(),
+                              1,
+                              MPI_UINT64_T,
+                              0,
+                              comm);
+        AssertThrowMPI(ierr);
+        std::vector<int> counts(sizes.size());
+        std::vector<int> offsets(sizes.size(), 0);
+        std::uint64_t    total = 0;
+        for (unsigned int r = 0; r < sizes.size(); ++r)
+          {
+            offsets[r] = static_cast<int>(total);
+            counts[r]  = static_cast<int>(sizes[r]);
+            total += sizes[r];
+          }
+        // MPI counts are int: refuse rather than wrap (about 2.1e9 doubles,
+        // 1.3e8 particles gathered on rank 0).
+        const int too_large =
+          Utilities::MPI::max(total > static_cast<std::uint64_t>(
+                                        std::numeric_limits<int>::max()) ?
+                                1 :
+                                0,
+                              comm);
+        AssertThrow(too_large == 0,
+                    ExcMessage("Checkpoint: the particles do not fit into one "
+                               "MPI_Gatherv on rank 0 (more than 2^31 - 1 "
+                               "values); use fewer particles per checkpoint "
+                               "or turn checkpoints off (Checkpoint/Interval "
+                               "= 0 still writes the final one)."));
+        std::vector<double> all(rank == 0 ? total : 0);
+        ierr = MPI_Gatherv(local.data(),
+                           static_cast<int>(local.size()),
+                           MPI_DOUBLE,
+                           all.data(),
+                           counts.data(),
+                           offsets.data(),
+                           MPI_DOUBLE,
+                           0,
+                           comm);
+        AssertThrowMPI(ierr);
+        return all;
       }
     } // namespace
 
@@ -316,14 +375,13 @@ namespace psmpm
       buffer.reserve(particles.size() * (1 + particles.n_packed()));
       for (std::size_t i = 0; i < particles.size(); ++i)
         pack_with_cell(particles, i, buffer);
-      const auto all = Utilities::MPI::gather(comm, buffer, 0);
+      const std::vector<double> all = gather_doubles(buffer, comm);
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       Particles::ParticleSet<dim> global;
       global.set_state_names(particles.get_state_names());
       global.n_bodies = particles.n_bodies;
-      for (const auto &b : all)
-        unpack_with_cells(b, global);
+      unpack_with_cells(all, global);
       global.save(archive);
     }
 

@@ -92,7 +92,7 @@ namespace psmpm
         const unsigned int  n         = state.grid->dofs_per_cell;
         const unsigned int *dofs      = state.grid->cell_dofs().data();
         const double        dt        = state.dt;
-        increments.resize(particles.size());
+        Particles::resize_per_particle(increments, particles);
         for (std::size_t p = 0; p < particles.size(); ++p)
           {
             const unsigned int    base = particles.cell[p] * n;

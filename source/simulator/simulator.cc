@@ -43,6 +43,22 @@ namespace psmpm
         return list.empty() ||
                std::find(list.begin(), list.end(), value) != list.end();
       }
+
+      /// The particle arrays' capacity once the particles are made or
+      /// loaded, which the per-particle work arrays follow
+      /// (Particles::resize_per_particle()): the size on one rank; on
+      /// several, where particles cross between ranks from the first step
+      /// on, an eighth of headroom, so that the first arrivals do not
+      /// reallocate (and first-touch) every array.
+      template <int dim>
+      void
+      set_particle_capacity(Particles::ParticleSet<dim> &particles,
+                            MPI_Comm                     comm)
+      {
+        const std::size_t n = particles.size();
+        particles.set_capacity(
+          Utilities::MPI::n_mpi_processes(comm) > 1 ? n + n / 8 : n);
+      }
     } // namespace
 
     template <int dim>
@@ -520,6 +536,7 @@ namespace psmpm
                      body.name() + "/Initial velocity",
                      body.number);
       particles.sort_by_cell(state.triangulation.n_active_cells());
+      set_particle_capacity(particles, comm);
     }
 
     template <int dim>
@@ -1009,6 +1026,7 @@ namespace psmpm
                                         state.cell_owner,
                                         state.particles,
                                         comm);
+          set_particle_capacity(state.particles, comm);
           archive = Archive();
 
           state.time       = shared.get_number("simulator/time");

@@ -32,8 +32,8 @@ namespace psmpm
     State<dim>::evaluate_shape_functions()
     {
       const unsigned int n = space->dofs_per_cell();
-      shape_values.resize(particles.size() * n);
-      shape_gradients.resize(particles.size() * n);
+      Particles::resize_per_particle(shape_values, particles, n);
+      Particles::resize_per_particle(shape_gradients, particles, n);
       space->evaluate(particles.size(),
                       particles.cell.data(),
                       particles.position.data(),

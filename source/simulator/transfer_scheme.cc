@@ -140,7 +140,7 @@ namespace psmpm
       StabilityMonitor                  &monitor)
     {
       auto &particles = state.particles;
-      volume_ratio.resize(particles.size());
+      Particles::resize_per_particle(volume_ratio, particles);
       state.materials.update(particles, increments.data(), volume_ratio.data());
       for (std::size_t p = 0; p < particles.size(); ++p)
         {

@@ -227,7 +227,8 @@ namespace psmpm
       rhs_vector.reinit(owned, comm);
       solution_vector.reinit(owned, comm);
       writable.reinit(owned, relevant, comm, true);
-      ghosted.reinit(owned, relevant, comm);
+      if (!owned_is_relevant)
+        exchange.reinit(owned, relevant, comm);
       cells.lumped.assign(n_cells * dofs_per_cell, 0.);
       cells.rhs.assign(n_cells * dofs_per_cell, Tensor<1, dim>());
       local_lumped.assign(relevant_global.size(), 0.);
@@ -915,9 +916,7 @@ namespace psmpm
             values[l] = 0. + scratch[l];
           return;
         }
-      target = 0;
-      target.add(relevant_global, scratch);
-      target.compress(VectorOperation::add);
+      exchange.sum_to_owned(scratch, target.begin());
     }
 
     template <int dim>
@@ -931,9 +930,7 @@ namespace psmpm
           std::copy(owned_vector.begin(), owned_vector.end(), local.begin());
           return;
         }
-      ghosted = owned_vector;
-      for (unsigned int l = 0; l < relevant_global.size(); ++l)
-        local[l] = ghosted[relevant_global[l]];
+      exchange.owned_to_relevant(owned_vector.begin(), local);
     }
 
     template <int dim>

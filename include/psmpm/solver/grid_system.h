@@ -18,6 +18,7 @@
 
 #include <psmpm/basis/space.h>
 #include <psmpm/solver/dense_cholesky.h>
+#include <psmpm/solver/ghost_exchange.h>
 #include <psmpm/solver/mass_strategy.h>
 #include <psmpm/solver/p_multigrid.h>
 #include <psmpm/solver/vertex_block_jacobi.h>
@@ -471,8 +472,9 @@ namespace psmpm
       TrilinosWrappers::MPI::Vector  lumped;   // owned
       TrilinosWrappers::MPI::Vector  writable; // owned + writable ghosts
       /// Scratch of const functions (no state between calls).
-      mutable TrilinosWrappers::MPI::Vector ghosted; // owned + read ghosts
-      mutable std::vector<double>           scratch;
+      mutable std::vector<double> scratch;
+      /// Sums and ghost values between ranks (unused on one rank).
+      GhostExchange exchange;
       /// Per-cell scratch of particle_diagonal() and its result.
       std::vector<double> cell_scratch, diagonal_scratch;
       /// Local relevant index of the j-th owned DoF: owned vectors (the

@@ -385,7 +385,7 @@ namespace psmpm
           const double        dt        = state.dt;
           const bool gradient = mode == AffineMatrix::velocity_gradient;
           const bool rotation = mode == AffineMatrix::rotation;
-          increments.resize(particles.size());
+          Particles::resize_per_particle(increments, particles);
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               const unsigned int    base = particles.cell[p] * n;
