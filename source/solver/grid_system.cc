@@ -227,7 +227,9 @@ namespace psmpm
       rhs_vector.reinit(owned, comm);
       solution_vector.reinit(owned, comm);
       writable.reinit(owned, relevant, comm, true);
-      if (!owned_is_relevant)
+      // On every rank of a parallel run, also one without ghosts (a rank
+      // without cells): building the pattern may be collective.
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
         exchange.reinit(owned, relevant, comm);
       cells.lumped.assign(n_cells * dofs_per_cell, 0.);
       cells.rhs.assign(n_cells * dofs_per_cell, Tensor<1, dim>());
