@@ -37,7 +37,11 @@ namespace psmpm
 
     /**
      * Times the enclosing block as section @p name, which must outlive
-     * the timer (a string literal).
+     * the timer (a string literal). Every rank must enter every section
+     * at least once (open a Scope unconditionally, even around work that
+     * is empty on some ranks): the statistics at the end reduce section
+     * by section over the ranks, and a section missing on one rank makes
+     * the others wait for it forever.
      */
     class Scope
     {
