@@ -191,7 +191,11 @@ namespace psmpm
       owned_to_relevant.clear();
       for (const auto i : owned)
         owned_to_relevant.push_back(relevant.index_within_set(i));
-      owned_is_relevant = relevant == owned;
+      // The same on every rank: an owner must take part in the exchange
+      // whenever another rank holds its DoFs as ghosts, even if it has
+      // no ghosts itself.
+      owned_is_relevant =
+        Utilities::MPI::min(relevant == owned ? 1U : 0U, comm) == 1;
 
       owned_cell_indices.clear();
       cell_dof_indices.assign(n_cells * dofs_per_cell, 0);
