@@ -231,9 +231,9 @@ namespace psmpm
       rhs_vector.reinit(owned, comm);
       solution_vector.reinit(owned, comm);
       writable.reinit(owned, relevant, comm, true);
-      // On every rank of a parallel run, also one without ghosts (a rank
-      // without cells): building the pattern may be collective.
-      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      // owned_is_relevant is the same on every rank, so every rank builds
+      // the pattern (which may be collective), also one without ghosts.
+      if (!owned_is_relevant)
         exchange.reinit(owned, relevant, comm);
       cells.lumped.assign(n_cells * dofs_per_cell, 0.);
       cells.rhs.assign(n_cells * dofs_per_cell, Tensor<1, dim>());
