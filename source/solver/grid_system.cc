@@ -13,6 +13,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/solver/component_cg.h>
 #include <psmpm/solver/grid_system.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -663,6 +664,7 @@ namespace psmpm
       for (unsigned int d = 0; d < dim; ++d)
         matrix[d].reinit(owned, owned, dsp, comm);
       compute_matrix_slots();
+      component_cg.reinit(matrix[0].trilinos_matrix());
     }
 
     template <int dim>
@@ -1006,8 +1008,114 @@ namespace psmpm
       patches.clear();
       if (mass_strategy->prepare(*this, diagonal))
         build_sparsity();
+      together = components_together();
+      if (together)
+        assemble_shared_matrix();
+      else
+        for (unsigned int d = 0; d < dim; ++d)
+          assemble_matrix(d);
+    }
+
+    template <int dim>
+    bool
+    GridSystem<dim>::components_together() const
+    {
+      // One component has nothing to share; the direct solver, AMG and
+      // p-multigrid work on the constrained matrix of a component.
+      if (dim == 1 || direct || cell_slots.empty() ||
+          (parameters.preconditioner != "jacobi" &&
+           parameters.preconditioner != "block jacobi"))
+        return false;
       for (unsigned int d = 0; d < dim; ++d)
-        assemble_matrix(d);
+        if (!only_dirichlet[d])
+          return false;
+      return true;
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::assemble_shared_matrix()
+    {
+      // matrix[0] holds M without constraints; ComponentCG applies P_d.
+      TrilinosWrappers::SparseMatrix &M = matrix[0];
+      M                                 = 0;
+      const unsigned int n              = dofs_per_cell;
+      for (unsigned int o = 0; o < owned_cell_indices.size(); ++o)
+        {
+          const unsigned int c = owned_cell_indices[o];
+          add_block(M,
+                    nullptr,
+                    &cell_dof_indices[c * n],
+                    n,
+                    &cells.mass[c * n * n],
+                    1.,
+                    &cell_slots[o * n * n]);
+        }
+      for (const auto &patch : patches)
+        add_block(M,
+                  nullptr,
+                  patch.dofs,
+                  patch.n,
+                  patch.values,
+                  patch.weight,
+                  patch.slots);
+      M.compress(VectorOperation::add);
+      for (const unsigned int l : owned_to_relevant)
+        if (local_lumped[l] == 0 && M.diag_element(relevant_global[l]) == 0)
+          M.set(relevant_global[l], relevant_global[l], 1.0);
+      M.compress(VectorOperation::insert);
+      const unsigned int block =
+        vertex_blocks(parameters.preconditioner, space) ?
+          space.dofs_per_vertex() :
+          1;
+      fixed_rows.resize(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          fixed_rows[d].clear();
+          for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
+            if (constrained[d][owned_to_relevant[j]])
+              fixed_rows[d].push_back(j);
+          block_jacobi[d].initialize(M, block, fixed_rows[d]);
+          factored[d] = false;
+        }
+    }
+
+    template <int dim>
+    unsigned int
+    GridSystem<dim>::solve_components()
+    {
+      const Epetra_CrsMatrix &M = matrix[0].trilinos_matrix();
+      if (!rhs_columns || !rhs_columns->Map().SameAs(M.RowMap()))
+        {
+          rhs_columns = std::make_unique<Epetra_MultiVector>(M.RowMap(), dim);
+          solution_columns =
+            std::make_unique<Epetra_MultiVector>(M.RowMap(), dim);
+        }
+      std::vector<const VertexBlockJacobi *> preconditioners;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          // Tensor<1,dim> stores its components contiguously.
+          scatter(&cells.rhs[0][0], dim, d, writable);
+          double *const b = (*rhs_columns)[d];
+          std::copy(writable.begin(), writable.end(), b);
+          for (const unsigned int j : fixed_rows[d])
+            b[j] = 0;
+          preconditioners.push_back(&block_jacobi[d]);
+        }
+      const ComponentCG::Result result =
+        component_cg.solve(M,
+                           preconditioners,
+                           fixed_rows,
+                           *solution_columns,
+                           *rhs_columns,
+                           parameters.tolerance,
+                           parameters.max_iterations);
+      stats.condition_number =
+        std::max(stats.condition_number, result.condition_number);
+      unsigned int iterations = 0;
+      for (const unsigned int i : result.iterations)
+        iterations += i;
+      return iterations;
     }
 
     template <int dim>
@@ -1019,27 +1127,43 @@ namespace psmpm
                                const double        weight,
                                const int          *slots)
     {
+      add_block(matrix[d],
+                constrained[d].data(),
+                dofs,
+                n,
+                values,
+                weight,
+                slots);
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::add_block(TrilinosWrappers::SparseMatrix &target,
+                               const char                     *fixed,
+                               const unsigned int             *dofs,
+                               const unsigned int              n,
+                               const double                   *values,
+                               const double                    weight,
+                               const int                      *slots)
+    {
       Epetra_CrsMatrix &A =
-        const_cast<Epetra_CrsMatrix &>(matrix[d].trilinos_matrix());
+        const_cast<Epetra_CrsMatrix &>(target.trilinos_matrix());
       int    *offsets, *columns;
       double *entries;
       A.ExtractCrsDataPointers(offsets, columns, entries);
-      const char *fixed = constrained[d].data();
       for (unsigned int k = 0; k < n; ++k)
         {
           const unsigned int row = dofs[k];
-          if (fixed[row])
+          if (fixed != nullptr && fixed[row])
             continue;
           const int r = matrix_row[row];
           for (unsigned int l = 0; l < n; ++l)
             {
               const double v = weight * values[k * n + l];
-              if (fixed[dofs[l]] || v == 0)
+              if ((fixed != nullptr && fixed[dofs[l]]) || v == 0)
                 continue;
               if (r < 0) // another rank's row: through Trilinos
-                matrix[d].add(relevant_global[row],
-                              relevant_global[dofs[l]],
-                              v);
+                target.add(relevant_global[row], relevant_global[dofs[l]], v);
               else if (slots != nullptr)
                 entries[slots[k * n + l]] += v;
               else
@@ -1051,6 +1175,8 @@ namespace psmpm
                 }
             }
         }
+      if (fixed == nullptr)
+        return;
       // What distribute_local_to_global puts on the diagonal of a fixed
       // DoF (keeps the matrix invertible and of the right scale).
       double average = 0;
@@ -1066,9 +1192,7 @@ namespace psmpm
             if (slots != nullptr && matrix_row[dofs[k]] >= 0)
               entries[slots[k * n + k]] += v;
             else
-              matrix[d].add(relevant_global[dofs[k]],
-                            relevant_global[dofs[k]],
-                            v);
+              target.add(relevant_global[dofs[k]], relevant_global[dofs[k]], v);
           }
     }
 
@@ -1258,7 +1382,14 @@ namespace psmpm
       std::vector<double>           &local = local_solution;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          if (uses_matrix() && !lumped_only)
+          if (uses_matrix() && !lumped_only && together)
+            {
+              if (d == 0)
+                stats.iterations += solve_components();
+              const double *const column = (*solution_columns)[d];
+              std::copy(column, column + owned_to_relevant.size(), x.begin());
+            }
+          else if (uses_matrix() && !lumped_only)
             stats.iterations += solve_consistent(d, x);
           else
             {

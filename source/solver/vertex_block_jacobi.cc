@@ -52,7 +52,8 @@ namespace psmpm
 
     void
     VertexBlockJacobi::initialize(const TrilinosWrappers::SparseMatrix &A,
-                                  const unsigned int block_size_in)
+                                  const unsigned int block_size_in,
+                                  const std::vector<unsigned int> &fixed)
     {
       AssertThrow(block_size_in >= 1 && block_size_in <= max_block,
                   ExcMessage("VertexBlockJacobi: block size " +
@@ -73,6 +74,8 @@ namespace psmpm
       crs.ExtractCrsDataPointers(offsets, columns, entries);
       std::array<int, max_block>                local_column;
       std::array<double, max_block * max_block> block;
+      std::array<bool, max_block>               masked;
+      auto                                      next_fixed = fixed.begin();
       for (unsigned int b = 0; b < n_rows / n; ++b)
         {
           const unsigned int first_row = b * n;
@@ -85,21 +88,55 @@ namespace psmpm
               local_column[i] = crs.LCID(first_gid + int(i));
             }
           block.fill(0.);
+          // The block's local columns are usually consecutive: then one
+          // subtraction and comparison per row entry finds its block
+          // column (three comparisons per entry otherwise).
+          bool consecutive = true;
+          for (unsigned int j = 1; j < n; ++j)
+            consecutive =
+              consecutive && local_column[j] == local_column[0] + int(j);
           for (unsigned int i = 0; i < n; ++i)
             for (int k = offsets[first_row + i]; k < offsets[first_row + i + 1];
                  ++k)
-              for (unsigned int j = 0; j < n; ++j)
-                if (columns[k] == local_column[j])
-                  block[i * n + j] += entries[k];
+              if (consecutive)
+                {
+                  const unsigned int j = columns[k] - local_column[0];
+                  if (j < n)
+                    block[i * n + j] += entries[k];
+                }
+              else
+                for (unsigned int j = 0; j < n; ++j)
+                  if (columns[k] == local_column[j])
+                    block[i * n + j] += entries[k];
+          // Masked rows: a unit row and column for the inversion, zero
+          // afterwards (the block of P A P on the free DoFs, inverted).
+          bool any_masked = false;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              while (next_fixed != fixed.end() && *next_fixed < first_row + i)
+                ++next_fixed;
+              masked[i] =
+                next_fixed != fixed.end() && *next_fixed == first_row + i;
+              any_masked |= masked[i];
+              if (masked[i])
+                for (unsigned int j = 0; j < n; ++j)
+                  block[i * n + j] = block[j * n + i] = (i == j);
+            }
           double *const out = &inverse[std::size_t(first_row) * n];
           std::copy(block.begin(), block.begin() + n * n, out);
-          if (!invert_in_place(out, n))
+          const bool inverted = invert_in_place(out, n);
+          if (inverted && any_masked)
+            for (unsigned int i = 0; i < n; ++i)
+              if (masked[i])
+                for (unsigned int j = 0; j < n; ++j)
+                  out[i * n + j] = out[j * n + i] = 0;
+          if (!inverted)
             {
               ++fallbacks;
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j < n; ++j)
                   out[i * n + j] =
-                    (i != j               ? 0. :
+                    (i != j || masked[i]  ? 0. :
                      block[i * n + i] > 0 ? 1. / block[i * n + i] :
                                             1.);
             }
@@ -112,10 +149,14 @@ namespace psmpm
     {
       AssertDimension(src.locally_owned_size(), n_rows);
       AssertDimension(dst.locally_owned_size(), n_rows);
-      const double *const s = src.begin();
-      double *const       d = dst.begin();
-      const unsigned int  n = block_size;
-      const double       *a = inverse.data();
+      vmult(dst.begin(), src.begin());
+    }
+
+    void
+    VertexBlockJacobi::vmult(double *const d, const double *const s) const
+    {
+      const unsigned int n = block_size;
+      const double      *a = inverse.data();
       if (n == 3)
         {
           // The Powell-Sabin case, unrolled.

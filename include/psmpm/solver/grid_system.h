@@ -17,6 +17,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <psmpm/basis/space.h>
+#include <psmpm/solver/component_cg.h>
 #include <psmpm/solver/dense_cholesky.h>
 #include <psmpm/solver/ghost_exchange.h>
 #include <psmpm/solver/mass_strategy.h>
@@ -279,7 +280,10 @@ namespace psmpm
       }
       /// The assembled mass matrix of component d (matrix strategies,
       /// after assemble_mass; rows of DoFs without particle mass carry a
-      /// unit diagonal).
+      /// unit diagonal). When the components are solved together (more
+      /// than one component, Dirichlet constraints only, (block) Jacobi
+      /// CG), matrix 0 is the matrix without constraints that they share
+      /// and the others are not assembled.
       const TrilinosWrappers::SparseMatrix &
       mass_matrix(const unsigned int d) const
       {
@@ -392,6 +396,29 @@ namespace psmpm
                 const double       *values,
                 const double        weight,
                 const int          *slots);
+      /// add_block() into @p target with the DoFs flagged in @p fixed
+      /// (local relevant numbering; nullptr: none) left out.
+      void
+      add_block(TrilinosWrappers::SparseMatrix &target,
+                const char                     *fixed,
+                const unsigned int             *dofs,
+                const unsigned int              n,
+                const double                   *values,
+                const double                    weight,
+                const int                      *slots);
+      /// Whether this step's components share one matrix and one CG
+      /// (ComponentCG): more than one component, constraints that fix
+      /// DoFs to zero only, (block) Jacobi CG, no direct solver.
+      bool
+      components_together() const;
+      /// matrix[0] = M without constraints, the fixed rows of each
+      /// component and its preconditioner with them masked.
+      void
+      assemble_shared_matrix();
+      /// All components by ComponentCG into solution_columns; returns the
+      /// sum of their iterations.
+      unsigned int
+      solve_components();
       void
       update_constraint_flags(const unsigned int d);
       unsigned int
@@ -461,6 +488,14 @@ namespace psmpm
       std::array<SparseDirectUMFPACK, dim>         pmg_coarse_direct;
       std::array<std::unique_ptr<PMultigrid>, dim> pmg;
       Vector<double>                               pmg_rhs, pmg_solution;
+      /// Components solved together (components_together(), decided in
+      /// every assemble_mass()): then matrix[0] is the unconstrained M and
+      /// matrix[d > 0] is not assembled; per component the locally owned
+      /// rows (owned order) it fixes, and the solver's columns.
+      bool                                   together = false;
+      std::vector<std::vector<unsigned int>> fixed_rows;
+      ComponentCG                            component_cg;
+      std::unique_ptr<Epetra_MultiVector>    rhs_columns, solution_columns;
       /// Direct solves (Parameters::direct_size): whether this run may use
       /// them, and per component whether this step's matrix was factored.
       bool direct = false;

@@ -43,14 +43,23 @@ namespace psmpm
     {
     public:
       /// Invert the diagonal blocks of @p A (its locally owned rows).
+      /// The owned rows listed in @p fixed (local row indices, sorted)
+      /// are masked: their rows and columns of the inverse are zero, as
+      /// for a matrix P A P whose fixed DoFs are projected out
+      /// (ComponentCG).
       void
       initialize(const TrilinosWrappers::SparseMatrix &A,
-                 const unsigned int                    block_size);
+                 const unsigned int                    block_size,
+                 const std::vector<unsigned int>      &fixed = {});
 
       /// dst = D^{-1} src (owned entries).
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const;
+
+      /// The same on the owned value arrays.
+      void
+      vmult(double *dst, const double *src) const;
 
       /// Blocks that fell back to their diagonal at the last set-up.
       unsigned int

@@ -1,0 +1,203 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+// Solver::ComponentCG (the components' mass solves through one matrix):
+// on M = M_Q1 (x) K, M_Q1 the Q1 mass matrix of a 6 x 5 grid and K an
+// SPD 3 x 3 coupling (so every vertex block of 3 DoFs is coupled, as for
+// Powell-Sabin), with column 0 fixed on all DoFs of the vertices at
+// x = 0 and column 1 fixed on the first DoF of the vertices at y = 0,
+// and a zero third column:
+// (a) each column equals separate SolverCG solves with the constrained
+//     matrix P_d M P_d + (I - P_d) and VertexBlockJacobi on it, to 1e-10
+//     relative, with the same iteration count (+-1) and the same
+//     condition-number estimate to 1e-6;
+// (b) fixed entries are exactly zero, the zero column takes 0 iterations;
+// (c) a column that needs more than Maximum iterations throws
+//     SolverControl::NoConvergence;
+// (d) after reinit() the rows are recognised as vertex triples and the
+//     blocked product gives the same solution to 1e-12 relative and the
+//     same iterations +-1.
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <psmpm/solver/component_cg.h>
+
+#include "../tests.h"
+
+#include <Epetra_MultiVector.h>
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream                    out("output");
+  return run_test([&out]() {
+    Triangulation<2> tria;
+    GridGenerator::subdivided_hyper_rectangle(tria,
+                                              {6, 5},
+                                              Point<2>(0, 0),
+                                              Point<2>(1.2, 1));
+    DoFHandler<2> dof_handler(tria);
+    dof_handler.distribute_dofs(FE_Q<2>(1));
+    const unsigned int     nv = dof_handler.n_dofs();
+    DynamicSparsityPattern scalar_dsp(nv);
+    DoFTools::make_sparsity_pattern(dof_handler, scalar_dsp);
+    SparsityPattern scalar_pattern;
+    scalar_pattern.copy_from(scalar_dsp);
+    SparseMatrix<double> Mq(scalar_pattern);
+    MatrixCreator::create_mass_matrix(dof_handler, QGauss<2>(2), Mq);
+    std::vector<Point<2>> support(nv);
+    DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dof_handler, support);
+
+    const double           K[3][3] = {{2, 1, 0.5}, {1, 2, 1}, {0.5, 1, 2}};
+    const unsigned int     n       = 3 * nv;
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int i = 0; i < nv; ++i)
+      for (auto e = Mq.begin(i); e != Mq.end(i); ++e)
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+            dsp.add(3 * i + a, 3 * e->column() + b);
+    // Fixed rows per column, and the constrained matrices of (a).
+    std::vector<std::vector<unsigned int>> fixed(3);
+    for (unsigned int i = 0; i < nv; ++i)
+      {
+        if (support[i][0] < 1e-12)
+          for (unsigned int a = 0; a < 3; ++a)
+            fixed[0].push_back(3 * i + a);
+        if (support[i][1] < 1e-12)
+          fixed[1].push_back(3 * i);
+      }
+    const auto is_fixed = [&fixed](const unsigned int d, const unsigned int i) {
+      return std::binary_search(fixed[d].begin(), fixed[d].end(), i);
+    };
+    const auto assemble = [&](const int d) {
+      TrilinosWrappers::SparseMatrix A;
+      A.reinit(complete_index_set(n),
+               complete_index_set(n),
+               dsp,
+               MPI_COMM_WORLD);
+      for (unsigned int i = 0; i < nv; ++i)
+        for (auto e = Mq.begin(i); e != Mq.end(i); ++e)
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = 0; b < 3; ++b)
+              {
+                const unsigned int r = 3 * i + a, c = 3 * e->column() + b;
+                if (d >= 0 && (is_fixed(d, r) || is_fixed(d, c)))
+                  continue;
+                A.set(r, c, e->value() * K[a][b]);
+              }
+      if (d >= 0)
+        for (const unsigned int r : fixed[d])
+          A.set(r, r, 1.);
+      A.compress(VectorOperation::insert);
+      return A;
+    };
+    const TrilinosWrappers::SparseMatrix M = assemble(-1);
+
+    const Epetra_Map  &map = M.trilinos_matrix().RowMap();
+    Epetra_MultiVector b(map, 3), x(map, 3);
+    for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int i = 0; i < n; ++i)
+        b[d][i] = is_fixed(d, i) ? 0. : std::sin(0.37 * i + d) + 0.3;
+    std::vector<psmpm::Solver::VertexBlockJacobi>         masked(3);
+    std::vector<const psmpm::Solver::VertexBlockJacobi *> preconditioners;
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        masked[d].initialize(M, 3, fixed[d]);
+        preconditioners.push_back(&masked[d]);
+      }
+    psmpm::Solver::ComponentCG cg;
+    const auto                 result =
+      cg.solve(M.trilinos_matrix(), preconditioners, fixed, x, b, 1e-12, 1000);
+
+    out << "DoFs " << n << ", fixed " << fixed[0].size() << " / "
+        << fixed[1].size() << ", iterations " << result.iterations[0] << " / "
+        << result.iterations[1] << " / " << result.iterations[2] << std::endl;
+    double max_condition = 0;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        const TrilinosWrappers::SparseMatrix A = assemble(d);
+        psmpm::Solver::VertexBlockJacobi     P;
+        P.initialize(A, 3);
+        TrilinosWrappers::MPI::Vector rhs(complete_index_set(n),
+                                          MPI_COMM_WORLD),
+          solution(rhs);
+        for (unsigned int i = 0; i < n; ++i)
+          rhs[i] = b[d][i];
+        SolverControl control(1000, 1e-12 * rhs.l2_norm(), false, false);
+        SolverCG<TrilinosWrappers::MPI::Vector> solver(control);
+        double                                  condition = 0;
+        solver.connect_condition_number_slot(
+          [&condition](const double c) { condition = c; });
+        solver.solve(A, solution, rhs, P);
+        max_condition     = std::max(max_condition, condition);
+        double difference = 0, fixed_max = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            difference = std::max(difference, std::abs(x[d][i] - solution[i]));
+            if (is_fixed(d, i))
+              fixed_max = std::max(fixed_max, std::abs(x[d][i]));
+          }
+        const int dit = int(result.iterations[d]) - int(control.last_step());
+        out << "column " << d << ": SolverCG " << control.last_step()
+            << " iterations" << std::endl;
+        PSMPM_CHECK(out, difference <= 1e-10 * solution.linfty_norm());
+        PSMPM_CHECK(out, std::abs(dit) <= 1);
+        PSMPM_CHECK(out, fixed_max == 0);
+      }
+    PSMPM_CHECK(out,
+                std::abs(result.condition_number - max_condition) <=
+                  1e-6 * max_condition);
+    PSMPM_CHECK(out, result.iterations[2] == 0);
+    double zero_column = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      zero_column = std::max(zero_column, std::abs(x[2][i]));
+    PSMPM_CHECK(out, zero_column == 0);
+
+    out << "triples before reinit: " << cg.uses_triples() << std::endl;
+    cg.reinit(M.trilinos_matrix());
+    out << "triples after reinit: " << cg.uses_triples() << std::endl;
+    Epetra_MultiVector x_blocked(map, 3);
+    const auto         blocked = cg.solve(M.trilinos_matrix(),
+                                  preconditioners,
+                                  fixed,
+                                  x_blocked,
+                                  b,
+                                  1e-12,
+                                  1000);
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        double difference = 0, size = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            difference =
+              std::max(difference, std::abs(x_blocked[d][i] - x[d][i]));
+            size = std::max(size, std::abs(x[d][i]));
+          }
+        PSMPM_CHECK(out, difference <= 1e-12 * size);
+        PSMPM_CHECK(out,
+                    std::abs(int(blocked.iterations[d]) -
+                             int(result.iterations[d])) <= 1);
+      }
+
+    bool thrown = false;
+    try
+      {
+        cg.solve(M.trilinos_matrix(), preconditioners, fixed, x, b, 1e-12, 2);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        thrown = e.last_step == 2;
+      }
+    PSMPM_CHECK(out, thrown);
+  });
+}
