@@ -794,9 +794,14 @@ namespace psmpm
       const auto checked_write_output = [&]() {
         checked([this]() { write_output(); });
       };
-      state.grid_velocity.assign(state.grid->relevant_dofs().n_elements(),
-                                 Tensor<1, dim>());
-      state.grid_acceleration = state.grid_velocity;
+      // A resumed run keeps the fields of its checkpoint: the initial
+      // guesses of its first solves.
+      if (!resumed)
+        {
+          state.grid_velocity.assign(state.grid->relevant_dofs().n_elements(),
+                                     Tensor<1, dim>());
+          state.grid_acceleration = state.grid_velocity;
+        }
       if (!resumed)
         {
           if (tracked)
@@ -886,6 +891,65 @@ namespace psmpm
     {
       /// The format a checkpoint declares; resume refuses others.
       const char *checkpoint_format = "psmpm checkpoint 1";
+
+      /// The grid velocity and acceleration of the last step, the initial
+      /// guesses of the next step's CG solves (Mass matrix/Warm start):
+      /// each rank's local (relevant) field as "grid/<name>/rank <r>".
+      template <int dim>
+      std::array<std::pair<std::string, std::vector<Tensor<1, dim>> *>, 2>
+      grid_fields(State<dim> &state)
+      {
+        return {{{"velocity", &state.grid_velocity},
+                 {"acceleration", &state.grid_acceleration}}};
+      }
+
+      template <int dim>
+      void
+      put_grid_fields(State<dim> &state, Archive &archive, MPI_Comm comm)
+      {
+        for (const auto &[name, field] : grid_fields(state))
+          {
+            std::vector<double> flat(field->size() * dim);
+            for (unsigned int i = 0; i < field->size(); ++i)
+              for (unsigned int d = 0; d < dim; ++d)
+                flat[i * dim + d] = (*field)[i][d];
+            const auto all = Utilities::MPI::gather(comm, flat, 0);
+            for (unsigned int r = 0; r < all.size(); ++r)
+              if (!all[r].empty())
+                archive.put("grid/" + name + "/rank " + std::to_string(r),
+                            all[r],
+                            dim);
+          }
+      }
+
+      /// Only on the number of ranks that wrote them: the partition, and
+      /// so the local numbering, is then the same. Otherwise (or for a
+      /// checkpoint without them) the first solves start from zero, and
+      /// the resumed run agrees with the uninterrupted one to the solver
+      /// tolerance instead of bit for bit.
+      template <int dim>
+      void
+      get_grid_fields(const Archive &shared, State<dim> &state, MPI_Comm comm)
+      {
+        const bool same_ranks = shared.get_integer("psmpm/n_mpi_ranks") ==
+                                Utilities::MPI::n_mpi_processes(comm);
+        const std::string rank =
+          std::to_string(Utilities::MPI::this_mpi_process(comm));
+        for (const auto &[name, field] : grid_fields(state))
+          {
+            const std::string entry = "grid/" + name + "/rank " + rank;
+            field->assign(state.grid->relevant_dofs().n_elements(),
+                          Tensor<1, dim>());
+            if (!same_ranks || !shared.has(entry))
+              continue;
+            const std::vector<double> flat = shared.get(entry);
+            if (flat.size() != field->size() * dim)
+              continue;
+            for (unsigned int i = 0; i < field->size(); ++i)
+              for (unsigned int d = 0; d < dim; ++d)
+                (*field)[i][d] = flat[i * dim + d];
+          }
+      }
     } // namespace
 
     template <int dim>
@@ -927,6 +991,8 @@ namespace psmpm
       std::vector<double> combined(history.size());
       Utilities::MPI::max(history, comm, combined);
       archive.put("mass_strategy/history", combined);
+
+      put_grid_fields(state, archive, comm);
 
       Checkpoint::gather_particles(state.particles, archive, comm);
       checkpoint.write(output_directory, state.step, archive, comm);
@@ -1050,6 +1116,7 @@ namespace psmpm
           // grid (OTM) evaluates it there in load().
           state.evaluate_shape_functions();
           transfer->load(shared, state);
+          get_grid_fields(shared, state, comm);
 
           // References computed alongside the run (ULFEM, the cantilever)
           // are deterministic in the times they are advanced to.

@@ -35,9 +35,8 @@ namespace psmpm
         return std::abs(T.eigenvalue(T.n() - 1) / T.eigenvalue(0));
       }
 
-      /// Four partial sums: a single running sum is a chain of dependent
-      /// additions, latency-bound at a third of the machine's rate on
-      /// vectors that sit in cache (so are the products below).
+      /// Four partial sums: one running sum is a latency-bound chain of
+      /// additions (so are the products below).
       double
       dot(const double *a, const double *b, const unsigned int n)
       {
@@ -64,7 +63,9 @@ namespace psmpm
       multiply(const Epetra_CrsMatrix   &M,
                const Epetra_MultiVector &p,
                Epetra_MultiVector       &q,
-               const std::vector<int>   &columns)
+               const std::vector<int>   &columns,
+               const Epetra_MultiVector &p_owned,
+               double                   *p_q)
       {
         int    *offsets, *indices;
         double *values;
@@ -73,7 +74,9 @@ namespace psmpm
         if (columns.size() == 2)
           {
             const double *p0 = p[columns[0]], *p1 = p[columns[1]];
+            const double *o0 = p_owned[columns[0]], *o1 = p_owned[columns[1]];
             double       *q0 = q[columns[0]], *q1 = q[columns[1]];
+            double        pq0 = 0, pq1 = 0;
             for (int i = 0; i < n_rows; ++i)
               {
                 double s0 = 0, s1 = 0, t0 = 0, t1 = 0;
@@ -93,13 +96,17 @@ namespace psmpm
                     s1 += values[k] * p1[indices[k]];
                   }
                 q0[i] = s0 + t0, q1[i] = s1 + t1;
+                pq0 += o0[i] * q0[i];
+                pq1 += o1[i] * q1[i];
               }
+            p_q[columns[0]] = pq0, p_q[columns[1]] = pq1;
             return;
           }
         for (const int c : columns)
           {
-            const double *pc = p[c];
+            const double *pc = p[c], *oc = p_owned[c];
             double       *qc = q[c];
+            double        pq = 0;
             for (int i = 0; i < n_rows; ++i)
               {
                 double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
@@ -114,7 +121,9 @@ namespace psmpm
                 for (; k < offsets[i + 1]; ++k)
                   s0 += values[k] * pc[indices[k]];
                 qc[i] = (s0 + s1) + (s2 + s3);
+                pq += oc[i] * qc[i];
               }
+            p_q[c] = pq;
           }
       }
 
@@ -127,7 +136,9 @@ namespace psmpm
       multiply_triples(const Epetra_CrsMatrix   &M,
                        const Epetra_MultiVector &p,
                        Epetra_MultiVector       &q,
-                       const std::vector<int>   &columns)
+                       const std::vector<int>   &columns,
+                       const Epetra_MultiVector &p_owned,
+                       double                   *p_q)
       {
         int    *offsets, *indices;
         double *values;
@@ -137,7 +148,9 @@ namespace psmpm
           {
             // Both columns in one pass: each block of M is read once.
             const double *p0 = p[columns[0]], *p1 = p[columns[1]];
+            const double *o0 = p_owned[columns[0]], *o1 = p_owned[columns[1]];
             double       *q0 = q[columns[0]], *q1 = q[columns[1]];
+            double        pq0 = 0, pq1 = 0;
             for (int i = 0; i < n_rows; i += 3)
               {
                 const double *a0  = values + offsets[i];
@@ -164,13 +177,17 @@ namespace psmpm
                   }
                 q0[i] = s0, q0[i + 1] = s1, q0[i + 2] = s2;
                 q1[i] = t0, q1[i + 1] = t1, q1[i + 2] = t2;
+                pq0 += o0[i] * s0 + o0[i + 1] * s1 + o0[i + 2] * s2;
+                pq1 += o1[i] * t0 + o1[i + 1] * t1 + o1[i + 2] * t2;
               }
+            p_q[columns[0]] = pq0, p_q[columns[1]] = pq1;
             return;
           }
         for (const int c : columns)
           {
-            const double *pc = p[c];
+            const double *pc = p[c], *oc = p_owned[c];
             double       *qc = q[c];
+            double        pq = 0;
             for (int i = 0; i < n_rows; i += 3)
               {
                 const double *a0  = values + offsets[i];
@@ -188,7 +205,9 @@ namespace psmpm
                     s2 += a2[k] * x0 + a2[k + 1] * x1 + a2[k + 2] * x2;
                   }
                 qc[i] = s0, qc[i + 1] = s1, qc[i + 2] = s2;
+                pq += oc[i] * s0 + oc[i + 1] * s1 + oc[i + 2] * s2;
               }
+            p_q[c] = pq;
           }
       }
     } // namespace
@@ -213,6 +232,31 @@ namespace psmpm
                           col[1] == col[0] + 1 && col[2] == col[0] + 2;
               }
         }
+    }
+
+    void
+    ComponentCG::product(const Epetra_CrsMatrix   &M,
+                         const Epetra_MultiVector &v,
+                         const std::vector<int>   &columns,
+                         double                   *v_q)
+    {
+      // One pass over M for all the columns; other ranks' entries of v
+      // imported first.
+      const Epetra_MultiVector *source = &v;
+      if (M.Importer() != nullptr)
+        {
+          if (!ghosted || !ghosted->Map().SameAs(M.ColMap()) ||
+              ghosted->NumVectors() != v.NumVectors())
+            ghosted = std::make_unique<Epetra_MultiVector>(M.ColMap(),
+                                                           v.NumVectors(),
+                                                           false);
+          ghosted->Import(v, *M.Importer(), Insert);
+          source = ghosted.get();
+        }
+      if (triples)
+        multiply_triples(M, *source, *q, columns, v, v_q);
+      else
+        multiply(M, *source, *q, columns, v, v_q);
     }
 
     ComponentCG::Result
@@ -251,31 +295,54 @@ namespace psmpm
       std::vector<std::vector<double>> diagonal(n_columns),
         offdiagonal(n_columns);
 
-      // r = b (x = 0), z = B r; reduce ||b||^2 and r.z together.
-      x.PutScalar(0.);
+      // r = b - M x (fixed rows zero), z = B r; reduce ||b||^2, ||r||^2
+      // and r.z together. A zero guess needs no product.
+      std::vector<int> columns;
+      bool             zero_guess = true;
+      for (unsigned int d = 0; d < n_columns; ++d)
+        {
+          columns.push_back(d);
+          const double *xd = x[d];
+          for (unsigned int i = 0; i < n && zero_guess; ++i)
+            zero_guess = xd[i] == 0;
+        }
+      // Decided over all ranks: the product is collective.
+      int zero_here = zero_guess, zero_everywhere = 1;
+      comm.MinAll(&zero_here, &zero_everywhere, 1);
+      zero_guess = zero_everywhere;
+      if (!zero_guess)
+        product(M, x, columns, local.data());
+      std::vector<double> r_b(3 * n_columns), global_r_b(3 * n_columns);
       for (unsigned int d = 0; d < n_columns; ++d)
         {
           const double *bd = b[d];
           double       *rd = (*r)[d], *zd = (*z)[d];
-          std::copy(bd, bd + n, rd);
-          preconditioners[d]->vmult(zd, rd);
-          local[2 * d]     = dot(bd, bd, n);
-          local[2 * d + 1] = dot(rd, zd, n);
+          if (zero_guess)
+            std::copy(bd, bd + n, rd);
+          else
+            {
+              const double *qd = (*q)[d];
+              for (unsigned int i = 0; i < n; ++i)
+                rd[i] = bd[i] - qd[i];
+              for (const unsigned int i : fixed[d])
+                rd[i] = 0;
+            }
+          preconditioners[d]->vmult(zd, rd, r_b[3 * d], r_b[3 * d + 1]);
+          r_b[3 * d + 2] = zero_guess ? r_b[3 * d] : dot(bd, bd, n);
         }
-      comm.SumAll(local.data(), global.data(), 2 * n_columns);
+      comm.SumAll(r_b.data(), global_r_b.data(), 3 * n_columns);
       unsigned int n_active = 0;
       for (unsigned int d = 0; d < n_columns; ++d)
         {
-          const double norm = std::sqrt(global[2 * d]);
-          limit[d]          = tolerance * norm;
-          rz[d]             = global[2 * d + 1];
+          const double residual = std::sqrt(global_r_b[3 * d]);
+          limit[d]              = tolerance * std::sqrt(global_r_b[3 * d + 2]);
+          rz[d]                 = global_r_b[3 * d + 1];
           // SolverControl's test at step 0: ||r|| <= limit (a zero
-          // right-hand side has nothing to solve).
-          active[d] = !(norm <= limit[d]);
+          // right-hand side with a zero guess has nothing to solve).
+          active[d] = !(residual <= limit[d]);
           n_active += active[d];
         }
 
-      std::vector<int> columns;
       for (unsigned int it = 1; n_active > 0; ++it)
         {
           // p = z + beta p on the active columns.
@@ -295,29 +362,14 @@ namespace psmpm
                       pd[i] = zd[i] + beta[d] * pd[i];
                   }
               }
-          // q = M p, one pass over M for all active columns; with other
-          // ranks' columns through their values imported first.
-          const Epetra_MultiVector *source = p.get();
-          if (M.Importer() != nullptr)
-            {
-              if (!ghosted || !ghosted->Map().SameAs(M.ColMap()) ||
-                  ghosted->NumVectors() != int(n_columns))
-                ghosted = std::make_unique<Epetra_MultiVector>(M.ColMap(),
-                                                               n_columns,
-                                                               false);
-              ghosted->Import(*p, *M.Importer(), Insert);
-              source = ghosted.get();
-            }
-          if (triples)
-            multiply_triples(M, *source, *q, columns);
-          else
-            multiply(M, *source, *q, columns);
+          // q = M p with p . q of every column (p is zero on fixed rows,
+          // so the rows of q that the mask zeroes add nothing).
+          product(M, *p, columns, local.data());
           for (const int d : columns)
             {
               double *qd = (*q)[d];
               for (const unsigned int i : fixed[d])
                 qd[i] = 0;
-              local[d] = dot((*p)[d], qd, n);
             }
           comm.SumAll(local.data(), global.data(), n_columns);
           // x += alpha p, r -= alpha q, z = B r; reduce ||r||^2 and r.z.
@@ -332,9 +384,7 @@ namespace psmpm
                   xd[i] += alpha[d] * pd[i];
                   rd[i] -= alpha[d] * qd[i];
                 }
-              preconditioners[d]->vmult(zd, rd);
-              local[2 * d]     = dot(rd, rd, n);
-              local[2 * d + 1] = dot(rd, zd, n);
+              preconditioners[d]->vmult(zd, rd, local[2 * d], local[2 * d + 1]);
             }
           comm.SumAll(local.data(), global.data(), 2 * n_columns);
           for (const int d : columns)

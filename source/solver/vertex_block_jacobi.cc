@@ -178,5 +178,46 @@ namespace psmpm
             d[r + i] = v;
           }
     }
+
+    void
+    VertexBlockJacobi::vmult(double *const       d,
+                             const double *const s,
+                             double             &src_src,
+                             double             &src_dst) const
+    {
+      const unsigned int n  = block_size;
+      const double      *a  = inverse.data();
+      double             ss = 0, sd = 0;
+      if (n == 3)
+        {
+          for (unsigned int r = 0; r < n_rows; r += 3, a += 9)
+            {
+              const double s0 = s[r], s1 = s[r + 1], s2 = s[r + 2];
+              const double d0 = a[0] * s0 + a[1] * s1 + a[2] * s2;
+              const double d1 = a[3] * s0 + a[4] * s1 + a[5] * s2;
+              const double d2 = a[6] * s0 + a[7] * s1 + a[8] * s2;
+              d[r] = d0, d[r + 1] = d1, d[r + 2] = d2;
+              ss += s0 * s0 + s1 * s1 + s2 * s2;
+              sd += s0 * d0 + s1 * d1 + s2 * d2;
+            }
+        }
+      else
+        {
+          vmult(d, s);
+          // Two partial sums each: a single running sum would be a
+          // latency-bound chain.
+          double       ss1 = 0, sd1 = 0;
+          unsigned int i = 0;
+          for (; i + 2 <= n_rows; i += 2)
+            {
+              ss += s[i] * s[i], sd += s[i] * d[i];
+              ss1 += s[i + 1] * s[i + 1], sd1 += s[i + 1] * d[i + 1];
+            }
+          for (; i < n_rows; ++i)
+            ss += s[i] * s[i], sd += s[i] * d[i];
+          ss += ss1, sd += sd1;
+        }
+      src_src = ss, src_dst = sd;
+    }
   } // namespace Solver
 } // namespace psmpm

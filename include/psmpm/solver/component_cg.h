@@ -48,10 +48,10 @@ namespace psmpm
       };
 
       /**
-       * Solve from a zero start until ||r_d|| <= @p tolerance ||b_d|| for
-       * every column d. @p fixed[d] lists the locally owned rows (local
-       * indices of M's row map) fixed for column d; their entries of @p b
-       * must be zero and stay zero in @p x. Throws
+       * Solve from the guess in @p x (zero on the fixed rows) until
+       * ||r_d|| <= @p tolerance ||b_d|| for every column d. @p fixed[d] lists
+       * the locally owned rows (local indices of M's row map) fixed for column
+       * d; their entries of @p b must be zero and stay zero in @p x. Throws
        * SolverControl::NoConvergence if a column needs more than
        * @p max_iterations.
        */
@@ -77,6 +77,14 @@ namespace psmpm
             const unsigned int                            max_iterations);
 
     private:
+      /// q = M v on @p columns (the work vector q), and v . q per column
+      /// into @p v_q[column].
+      void
+      product(const Epetra_CrsMatrix   &M,
+              const Epetra_MultiVector &v,
+              const std::vector<int>   &columns,
+              double                   *v_q);
+
       /// Work vectors, kept between solves of the same map and width.
       std::unique_ptr<Epetra_MultiVector> r, z, p, q;
       /// p in the matrix' column map (other ranks' entries), if it has one.

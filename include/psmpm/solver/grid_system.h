@@ -65,6 +65,8 @@ namespace psmpm
         /// Serial systems with at most this many DoFs are solved by a
         /// dense Cholesky factorization instead of CG (0: never).
         unsigned int direct_size = 600;
+        /// Mass matrix/Warm start: CG starts from the caller's field.
+        bool warm_start = true;
         /// Fictitious mass fraction alpha of the stabilised strategies
         /// (Mass matrix/Stabilization).
         double stabilization = 1;
@@ -158,6 +160,10 @@ namespace psmpm
 
       /// Solve M x_d = b_d for every component d with b from the cell
       /// right-hand sides; result in @p solution (local relevant numbering).
+      /// With Warm start, CG starts from @p solution if it has the
+      /// relevant size (the last step's field of the same solve; entries
+      /// of constrained DoFs are taken as zero), otherwise from zero; the
+      /// stopping test is relative to |b| either way.
       /// With @p lumped, M is the lumped mass (the row sums of the cell
       /// arrays) whatever the strategy: Taylor least squares' acceleration
       /// of the chapter (Wobbes et al. 2019, eq. 4.8 with the lumped mass
@@ -415,12 +421,17 @@ namespace psmpm
       /// component and its preconditioner with them masked.
       void
       assemble_shared_matrix();
-      /// All components by ComponentCG into solution_columns; returns the
-      /// sum of their iterations.
+      /// solution_columns (allocated for the matrix' rows) = @p solution's
+      /// owned entries, zero on fixed rows: the guess of solve_components.
+      void
+      set_guess(const std::vector<Tensor<1, dim>> &solution);
+      /// All components by ComponentCG into solution_columns, which holds
+      /// the initial guess; returns the sum of their iterations.
       unsigned int
       solve_components();
       void
       update_constraint_flags(const unsigned int d);
+      /// @p x holds the initial guess (owned entries).
       unsigned int
       solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
       /// Preconditioner = pmg: P from the control points (reinit()).

@@ -61,6 +61,14 @@ namespace psmpm
       void
       vmult(double *dst, const double *src) const;
 
+      /// The same, and the products src . src and src . dst that CG needs
+      /// next, in the same pass (ComponentCG).
+      void
+      vmult(double       *dst,
+            const double *src,
+            double       &src_src,
+            double       &src_dst) const;
+
       /// Blocks that fell back to their diagonal at the last set-up.
       unsigned int
       n_diagonal_fallbacks() const
