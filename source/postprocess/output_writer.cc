@@ -432,16 +432,18 @@ namespace psmpm
                                "(Int32 connectivity)."));
         const DataOutBase::VtkFlags flags = vtk_flags();
         CompressedArrayWriter       writer(Z_BEST_SPEED); // as best_speed
-        // One array: the opening tag with @p attributes, then the n x
-        // n_components values of component(i, c) as T.
+        // One array: the opening tag with @p attributes, then the
+        // n_entries x n_components values of component(i, c) as T (points:
+        // n entries, cells: n_cells).
         const auto array = [&](const std::string &attributes,
+                               const std::size_t  n_entries,
                                const unsigned int n_components,
                                const auto         component,
                                const auto         as_type) {
           using T = decltype(as_type);
           out << "    <DataArray " << attributes << " format=\"binary\">\n";
-          writer.begin(out, n * n_components * sizeof(T));
-          for (std::size_t i = 0; i < n; ++i)
+          writer.begin(out, n_entries * n_components * sizeof(T));
+          for (std::size_t i = 0; i < n_entries; ++i)
             for (unsigned int c = 0; c < n_components; ++c)
               writer.push(static_cast<T>(component(i, c)));
           writer.end();
@@ -454,6 +456,7 @@ namespace psmpm
         out << "  <Points>\n";
         array(
           "type=\"Float32\" NumberOfComponents=\"3\"",
+          n,
           3,
           [&](const std::size_t i, const unsigned int c) {
             return c < dim ? position(i)[c] : 0.;
@@ -463,30 +466,23 @@ namespace psmpm
         out << "  <Cells>\n";
         array(
           "type=\"Int32\" Name=\"connectivity\"",
+          n,
           1,
           [](const std::size_t i, unsigned int) { return i; },
           std::int32_t());
-        // The cells' arrays have n_cells entries: array() runs over n.
-        const auto cell_array = [&](const std::string &attributes,
-                                    const auto         entry,
-                                    const auto         as_type) {
-          using T = decltype(as_type);
-          out << "    <DataArray " << attributes << " format=\"binary\">\n";
-          writer.begin(out, n_cells * sizeof(T));
-          for (std::size_t i = 0; i < n_cells; ++i)
-            writer.push(static_cast<T>(entry(i)));
-          writer.end();
-          out << "\n    </DataArray>\n";
-        };
-        cell_array(
+        array(
           "type=\"Int32\" Name=\"offsets\"",
-          [vertices_per_cell](const std::size_t i) {
+          n_cells,
+          1,
+          [vertices_per_cell](const std::size_t i, unsigned int) {
             return (i + 1) * vertices_per_cell;
           },
           std::int32_t());
-        cell_array(
+        array(
           "type=\"UInt8\" Name=\"types\"",
-          [vtk_type](std::size_t) { return vtk_type; },
+          n_cells,
+          1,
+          [vtk_type](std::size_t, unsigned int) { return vtk_type; },
           std::uint8_t());
         out << "  </Cells>\n";
 
@@ -525,6 +521,7 @@ namespace psmpm
             array(
               "type=\"Float32\" Name=\"" + name + "\" NumberOfComponents=\"" +
                 std::to_string(is_tensor ? 9 : 3) + "\"",
+              n,
               is_tensor ? 9 : 3,
               [&](const std::size_t i, const unsigned int c) {
                 return source[c] == numbers::invalid_unsigned_int ?
@@ -537,6 +534,7 @@ namespace psmpm
           if (!written[k])
             array(
               "type=\"Float32\" Name=\"" + names[k] + "\"",
+              n,
               1,
               [&](const std::size_t i, unsigned int) { return value(i, k); },
               float());

@@ -1050,31 +1050,8 @@ namespace psmpm
       // matrix[0] holds M without constraints; ComponentCG applies P_d.
       TrilinosWrappers::SparseMatrix &M = matrix[0];
       M                                 = 0;
-      const unsigned int n              = dofs_per_cell;
-      for (unsigned int o = 0; o < owned_cell_indices.size(); ++o)
-        {
-          const unsigned int c = owned_cell_indices[o];
-          add_block(M,
-                    nullptr,
-                    &cell_dof_indices[c * n],
-                    n,
-                    &cells.mass[c * n * n],
-                    1.,
-                    &cell_slots[o * n * n]);
-        }
-      for (const auto &patch : patches)
-        add_block(M,
-                  nullptr,
-                  patch.dofs,
-                  patch.n,
-                  patch.values,
-                  patch.weight,
-                  patch.slots);
-      M.compress(VectorOperation::add);
-      for (const unsigned int l : owned_to_relevant)
-        if (local_lumped[l] == 0 && M.diag_element(relevant_global[l]) == 0)
-          M.set(relevant_global[l], relevant_global[l], 1.0);
-      M.compress(VectorOperation::insert);
+      add_blocks(M, nullptr);
+      finish_assembly(M, nullptr);
       const unsigned int block =
         vertex_blocks(parameters.preconditioner, space) ?
           space.dofs_per_vertex() :
@@ -1145,20 +1122,50 @@ namespace psmpm
 
     template <int dim>
     void
-    GridSystem<dim>::add_block(const unsigned int  d,
-                               const unsigned int *dofs,
-                               const unsigned int  n,
-                               const double       *values,
-                               const double        weight,
-                               const int          *slots)
+    GridSystem<dim>::add_blocks(TrilinosWrappers::SparseMatrix &target,
+                                const char                     *fixed)
     {
-      add_block(matrix[d],
-                constrained[d].data(),
-                dofs,
-                n,
-                values,
-                weight,
-                slots);
+      // Straight into the value array: the per-cell work of
+      // distribute_local_to_global (sorting, map look-ups, a search per
+      // entry) cost more than the particle loops on small and medium
+      // systems. Same sums in the same order: bit-identical.
+      const unsigned int n = dofs_per_cell;
+      for (unsigned int o = 0; o < owned_cell_indices.size(); ++o)
+        {
+          const unsigned int c = owned_cell_indices[o];
+          add_block(target,
+                    fixed,
+                    &cell_dof_indices[c * n],
+                    n,
+                    &cells.mass[c * n * n],
+                    1.,
+                    &cell_slots[o * n * n]);
+        }
+      for (const auto &patch : patches)
+        add_block(target,
+                  fixed,
+                  patch.dofs,
+                  patch.n,
+                  patch.values,
+                  patch.weight,
+                  patch.slots);
+    }
+
+    template <int dim>
+    void
+    GridSystem<dim>::finish_assembly(TrilinosWrappers::SparseMatrix &target,
+                                     const char                     *fixed)
+    {
+      target.compress(VectorOperation::add);
+      // A DoF whose support holds no particle has an empty row: give it
+      // a unit diagonal so that its (zero) coefficient is well defined.
+      // (Rows of patch blocks, e.g. the ghost penalty, may hold a DoF
+      // without particle mass: it keeps its row.)
+      for (const unsigned int l : owned_to_relevant)
+        if (local_lumped[l] == 0 && (fixed == nullptr || !fixed[l]) &&
+            target.diag_element(relevant_global[l]) == 0)
+          target.set(relevant_global[l], relevant_global[l], 1.0);
+      target.compress(VectorOperation::insert);
     }
 
     template <int dim>
@@ -1262,42 +1269,10 @@ namespace psmpm
     {
       matrix[d] = 0;
       if (only_dirichlet[d] && !cell_slots.empty())
-        {
-          // Straight into the value array: the per-cell work of
-          // distribute_local_to_global (sorting, map look-ups, a search per
-          // entry) cost more than the particle loops on small and
-          // medium systems. Same sums in the same order: bit-identical.
-          const unsigned int n = dofs_per_cell;
-          for (unsigned int o = 0; o < owned_cell_indices.size(); ++o)
-            {
-              const unsigned int c = owned_cell_indices[o];
-              add_block(d,
-                        &cell_dof_indices[c * n],
-                        n,
-                        &cells.mass[c * n * n],
-                        1.,
-                        &cell_slots[o * n * n]);
-            }
-          for (const auto &patch : patches)
-            add_block(d,
-                      patch.dofs,
-                      patch.n,
-                      patch.values,
-                      patch.weight,
-                      patch.slots);
-        }
+        add_blocks(matrix[d], constrained[d].data());
       else
         assemble_matrix_with_constraints(d);
-      matrix[d].compress(VectorOperation::add);
-      // A DoF whose support holds no particle has an empty row: give it
-      // a unit diagonal so that its (zero) coefficient is well defined.
-      // (Rows of patch blocks, e.g. the ghost penalty, may hold a DoF
-      // without particle mass: it keeps its row.)
-      for (const unsigned int l : owned_to_relevant)
-        if (local_lumped[l] == 0 && !constrained[d][l] &&
-            matrix[d].diag_element(relevant_global[l]) == 0)
-          matrix[d].set(relevant_global[l], relevant_global[l], 1.0);
-      matrix[d].compress(VectorOperation::insert);
+      finish_assembly(matrix[d], constrained[d].data());
       factored[d] = direct && dense[d].factorize(matrix[d]);
       if (!factored[d])
         {

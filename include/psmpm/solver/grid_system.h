@@ -391,19 +391,11 @@ namespace psmpm
       void
       compute_matrix_slots();
       /// Add the dense block @p values (row-major, n x n) over the local
-      /// relevant DoFs @p dofs to matrix d, as distribute_local_to_global
-      /// with homogeneous Dirichlet constraints does, through the value
-      /// array (cell blocks with their precomputed @p slots, other blocks
-      /// by a search of the row).
-      void
-      add_block(const unsigned int  d,
-                const unsigned int *dofs,
-                const unsigned int  n,
-                const double       *values,
-                const double        weight,
-                const int          *slots);
-      /// add_block() into @p target with the DoFs flagged in @p fixed
-      /// (local relevant numbering; nullptr: none) left out.
+      /// relevant DoFs @p dofs to @p target, as distribute_local_to_global
+      /// with homogeneous Dirichlet constraints on the DoFs flagged in
+      /// @p fixed (local relevant numbering; nullptr: none) does, through
+      /// the value array (cell blocks with their precomputed @p slots,
+      /// other blocks by a search of the row).
       void
       add_block(TrilinosWrappers::SparseMatrix &target,
                 const char                     *fixed,
@@ -412,6 +404,14 @@ namespace psmpm
                 const double                   *values,
                 const double                    weight,
                 const int                      *slots);
+      /// add_block() of every owned cell's block and every patch block.
+      void
+      add_blocks(TrilinosWrappers::SparseMatrix &target, const char *fixed);
+      /// Compress @p target and give rows without particle mass (not
+      /// flagged in @p fixed) a unit diagonal.
+      void
+      finish_assembly(TrilinosWrappers::SparseMatrix &target,
+                      const char                     *fixed);
       /// Whether this step's components share one matrix and one CG
       /// (ComponentCG): more than one component, constraints that fix
       /// DoFs to zero only, (block) Jacobi CG, no direct solver.
