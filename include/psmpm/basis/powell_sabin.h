@@ -194,14 +194,12 @@ namespace psmpm
       std::array<Point<2>, 19>
       bezier_points(const unsigned int cell) const;
 
-      /// Bezier ordinate of local function @p i at Bezier point @p j.
+      /// Bezier ordinate of local function @p i at Bezier point @p j
+      /// (recomputed per call: evaluate() does not use them).
       double
       ordinate(const unsigned int cell,
                const unsigned int i,
-               const unsigned int j) const
-      {
-        return cell_data[cell].ordinates[j][i];
-      }
+               const unsigned int j) const;
       /// @}
 
     private:
@@ -232,12 +230,29 @@ namespace psmpm
         double inverse_split[3];
         /// Line R_k Z, positive on the side of V_k.
         double split_line[3][3];
-        /// Barycentric coordinates of the six sub-triangles.
-        double sub[6][3][3];
-        /// Bezier ordinates, point-major: ordinates[point][function].
-        double ordinates[19][9];
+        /**
+         * The nine functions on each sub-triangle as quadratics in its
+         * first two barycentric coordinates (l0, l1) = map (x - origin),
+         * coefficient-major: c[m][i] for the monomials 1, l0, l1, l0^2,
+         * l0 l1, l1^2. On the sub-triangle 0 <= l0, l1 <= 1, so no term
+         * is much larger than the function, however thin the triangle
+         * (tests/basis/powell_sabin_05); it is a third less arithmetic
+         * than the Bernstein form (the Bezier ordinates: cell_ordinates).
+         */
+        struct SubTriangle
+        {
+          double map[2][3];
+          double c[6][9];
+        } sub[6];
       };
       std::vector<CellData> cell_data;
+      /// Vertex indices per cell, for the ordinates' triplets.
+      std::vector<std::array<unsigned int, 3>> cell_vertices;
+
+      /// The 19 x 9 Bezier ordinates of a cell, point-major.
+      using Ordinates = std::array<std::array<double, 9>, 19>;
+      Ordinates
+      cell_ordinates(const unsigned int cell) const;
 
       void
       build_control_triangles(const Triangulation<2> &tria);
