@@ -39,17 +39,19 @@ namespace psmpm
                 Tensor<1, dim>();
             const Tensor<1, dim> external = force_weight * m * state.gravity;
             const double         volume   = force_weight * particles.volume[p];
-            add_point<dim>(n,
-                           m,
-                           momentum + external,
-                           volume,
-                           s,
-                           &state.shape_values[p * n],
-                           &state.shape_gradients[p * n],
-                           lumped + base,
-                           consistent ? mass_mat + base * n : nullptr,
-                           rhs + base);
+            add_point<dim, true>(n,
+                                 m,
+                                 momentum + external,
+                                 volume,
+                                 s,
+                                 &state.shape_values[p * n],
+                                 &state.shape_gradients[p * n],
+                                 lumped + base,
+                                 consistent ? mass_mat + base * n : nullptr,
+                                 rhs + base);
           }
+        if (consistent)
+          symmetrize_cell_mass(mass_mat, cells.mass.size() / (n * n), n);
       }
 
 

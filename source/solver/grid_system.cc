@@ -107,7 +107,7 @@ namespace psmpm
                         "system (the grid velocity or acceleration, kept in "
                         "checkpoints) instead of zero; the stopping test is "
                         "relative to the right-hand side either way "
-                        "(doc/performance.md: 23 % fewer iterations on the "
+                        "(doc/performance.md: 24 % fewer iterations on the "
                         "closed Powell-Sabin throughput bar).");
       prm.declare_entry("Direct solver size",
                         "600",
