@@ -15,9 +15,7 @@ namespace psmpm
     DenseCholesky::factorize(const TrilinosWrappers::SparseMatrix &A)
     {
       n = A.m();
-      // Only the envelope is ever read, and it is zeroed below: a full
-      // n^2 fill per factorization cost as much as the scatter.
-      L.resize(std::size_t(n) * n);
+      L.assign(std::size_t(n) * n, 0.);
       first.assign(n, n);
       y.resize(n);
       const Epetra_CrsMatrix &crs = A.trilinos_matrix();
@@ -32,7 +30,6 @@ namespace psmpm
       column_gid.resize(crs.NumMyCols());
       for (int c = 0; c < crs.NumMyCols(); ++c)
         column_gid[c] = crs.GCID(c);
-      // The envelope first, then zero it and scatter the entries.
       for (unsigned int r = 0; r < n; ++r)
         {
           const unsigned int i = row_gid[r];
@@ -40,23 +37,12 @@ namespace psmpm
             {
               const unsigned int j = column_gid[columns[k]];
               if (j <= i && entries[k] != 0)
-                first[i] = std::min(first[i], j);
+                {
+                  L[std::size_t(i) * n + j] = entries[k];
+                  first[i]                  = std::min(first[i], j);
+                }
             }
           first[i] = std::min(first[i], i);
-        }
-      for (unsigned int i = 0; i < n; ++i)
-        std::fill(&L[std::size_t(i) * n + first[i]],
-                  &L[std::size_t(i) * n + i + 1],
-                  0.);
-      for (unsigned int r = 0; r < n; ++r)
-        {
-          const unsigned int i = row_gid[r];
-          for (int k = offsets[r]; k < offsets[r + 1]; ++k)
-            {
-              const unsigned int j = column_gid[columns[k]];
-              if (j <= i && entries[k] != 0)
-                L[std::size_t(i) * n + j] = entries[k];
-            }
         }
       // Cholesky-Banachiewicz, row by row, inside the envelope.
       for (unsigned int i = 0; i < n; ++i)
