@@ -131,7 +131,9 @@ namespace psmpm
       /// and gzip the buffers (5.5 s of a 980,000-particle checkpoint on two
       /// ranks against 1.8 s on one).
       std::vector<double>
-      gather_doubles(const std::vector<double> &local, MPI_Comm comm)
+      gather_doubles(const std::vector<double>  &local,
+                     MPI_Comm                    comm,
+                     std::vector<std::uint64_t> *sizes_out = nullptr)
       {
         const unsigned int  rank    = Utilities::MPI::this_mpi_process(comm);
         const unsigned int  n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -180,9 +182,29 @@ namespace psmpm
                            0,
                            comm);
         AssertThrowMPI(ierr);
+        if (sizes_out != nullptr)
+          *sizes_out = sizes;
         return all;
       }
     } // namespace
+
+
+
+    std::vector<std::vector<double>>
+    Checkpoint::gather_per_rank(const std::vector<double> &local, MPI_Comm comm)
+    {
+      std::vector<std::uint64_t> sizes;
+      const std::vector<double>  all = gather_doubles(local, comm, &sizes);
+      std::vector<std::vector<double>> pieces(sizes.size());
+      std::size_t                      offset = 0;
+      for (unsigned int r = 0; r < sizes.size(); ++r)
+        {
+          pieces[r].assign(all.begin() + offset,
+                           all.begin() + offset + sizes[r]);
+          offset += sizes[r];
+        }
+      return pieces;
+    }
 
 
 

@@ -913,7 +913,7 @@ namespace psmpm
             for (unsigned int i = 0; i < field->size(); ++i)
               for (unsigned int d = 0; d < dim; ++d)
                 flat[i * dim + d] = (*field)[i][d];
-            const auto all = Utilities::MPI::gather(comm, flat, 0);
+            const auto all = Checkpoint::gather_per_rank(flat, comm);
             for (unsigned int r = 0; r < all.size(); ++r)
               if (!all[r].empty())
                 archive.put("grid/" + name + "/rank " + std::to_string(r),

@@ -115,6 +115,15 @@ namespace psmpm
                             const std::string &current,
                             const std::string &defaults = "");
 
+      /**
+       * Every rank's @p local on rank 0, one vector per rank in rank order
+       * (no vectors on the other ranks): the raw MPI_Gatherv that also
+       * gathers the particles (Utilities::MPI::gather serializes and
+       * gzips). For per-rank data such as the solvers' warm-start fields.
+       */
+      static std::vector<std::vector<double>>
+      gather_per_rank(const std::vector<double> &local, MPI_Comm comm);
+
       /// Gather the particles of all ranks, in rank order, into
       /// @p archive of rank 0 (ParticleSet::save()).
       template <int dim>
