@@ -7,6 +7,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <type_traits>
+
 namespace psmpm
 {
   namespace Simulator
@@ -81,41 +83,27 @@ namespace psmpm
               double                        *mass,
               Tensor<1, dim>                *rhs)
     {
+      // The counts with a compile-time loop; N is an integral_constant.
+      const auto fixed = [&](const auto N) {
+        internal::add_point_fixed<dim, std::decay_t<decltype(N)>::value, upper>(
+          m,
+          f,
+          volume,
+          stress,
+          phi,
+          grad,
+          lumped,
+          mass,
+          rhs);
+      };
       switch (n)
         {
           case 3:
-            internal::add_point_fixed<dim, 3, upper>(m,
-                                                     f,
-                                                     volume,
-                                                     stress,
-                                                     phi,
-                                                     grad,
-                                                     lumped,
-                                                     mass,
-                                                     rhs);
-            return;
+            return fixed(std::integral_constant<unsigned int, 3>());
           case 4:
-            internal::add_point_fixed<dim, 4, upper>(m,
-                                                     f,
-                                                     volume,
-                                                     stress,
-                                                     phi,
-                                                     grad,
-                                                     lumped,
-                                                     mass,
-                                                     rhs);
-            return;
+            return fixed(std::integral_constant<unsigned int, 4>());
           case 9:
-            internal::add_point_fixed<dim, 9, upper>(m,
-                                                     f,
-                                                     volume,
-                                                     stress,
-                                                     phi,
-                                                     grad,
-                                                     lumped,
-                                                     mass,
-                                                     rhs);
-            return;
+            return fixed(std::integral_constant<unsigned int, 9>());
           default:
             break;
         }
@@ -127,7 +115,7 @@ namespace psmpm
             {
               double      *row = mass + k * n;
               const double mk  = m * phi[k];
-              for (unsigned int l = 0; l < n; ++l)
+              for (unsigned int l = upper ? k : 0; l < n; ++l)
                 row[l] += mk * phi[l];
             }
         }
