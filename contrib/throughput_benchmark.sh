@@ -5,14 +5,14 @@
 # bases on the closed bar (partially lumped, musl) and on the same bar
 # with free boundaries (P1: ghost penalty, musl; Powell-Sabin: lumped,
 # apic). Writes doc/data/throughput.tsv: particle-steps per second (wall
-# time of the time loop), CPU seconds of the whole run (user + sys, setup
+# time of the time loop, per-step statistics included), CPU seconds of the whole run (user + sys, setup
 # included), peak memory and the TimerOutput breakdown from summary.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${PSMPM_BINARY:-build/psmpm}
 out=doc/data/throughput.tsv
 mkdir -p doc/data
-printf "basis\tboundaries\tmass_matrix\ttransfer\tparticles\tsteps\tparticle_steps_per_s\tcpu_s\tmax_rss_mib\tlocate_s\tparticle_to_grid_s\tsolve_s\tgrid_to_particle_s\tupdate_s\ttime_loop_s\n" > $out
+printf "basis\tboundaries\tmass_matrix\ttransfer\tparticles\tsteps\tparticle_steps_per_s\tcpu_s\tmax_rss_mib\tlocate_s\tparticle_to_grid_s\tsolve_s\tgrid_to_particle_s\tupdate_s\tstatistics_s\ttime_loop_s\n" > $out
 run() { # basis mass transfer closed|free
   local dir extra=()
   dir=$(mktemp -d)
@@ -27,7 +27,7 @@ u, y, rss = open(sys.argv[2]).read().split()[-3:]
 print("\t".join([sys.argv[3], sys.argv[4], s["mass_matrix"], s["transfer"],
   str(s["n_particles"]), str(s["steps"]), "%.3e" % s["particle_steps_per_second"],
   "%.2f" % (float(u) + float(y)), "%.0f" % (float(rss) / 1024)] +
-  ["%.3f" % t[k] for k in ["locate", "particle_to_grid", "solve", "grid_to_particle", "update"]] +
+  ["%.3f" % t[k] for k in ["locate", "particle_to_grid", "solve", "grid_to_particle", "update", "statistics"]] +
   ["%.3f" % s["time_loop_s"]]))
 PY
   rm -rf "$dir" "$dir.time"

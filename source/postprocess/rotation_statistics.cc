@@ -16,11 +16,13 @@ namespace psmpm
   {
     template <int dim>
     typename RotationStatistics<dim>::Values
-    RotationStatistics<dim>::compute(const Simulator::State<dim> &state)
+    RotationStatistics<dim>::compute(const Simulator::State<dim> &state,
+                                     const bool                   affine_part)
     {
       if constexpr (dim == 1)
         {
           (void)state;
+          (void)affine_part;
           return {};
         }
       else
@@ -50,62 +52,75 @@ namespace psmpm
                 control_points[l] = all[global[l]];
               have_control_points = true;
             }
-          // Current centre of mass, for the angle: one reduction for the
-          // three moments (these statistics run every step; each
-          // reduction is a synchronisation).
-          double       mass = 0;
-          Tensor<1, 2> first;
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              mass += particles.mass[p];
-              first += particles.mass[p] * particles.position[p];
-            }
-          double moments[3] = {first[0], first[1], mass};
-          Utilities::MPI::sum(ArrayView<const double>(moments, 3),
-                              comm,
-                              ArrayView<double>(moments, 3));
-          // Times the inverse, as Tensor / double computes it.
-          const double   inverse_mass = 1. / moments[2];
-          const Point<2> now(moments[0] * inverse_mass,
-                             moments[1] * inverse_mass);
 
+          // One pass over the particles and one reduction (these
+          // statistics run every step; on large scenes they cost as much
+          // as a particle loop). The angle's sums are about the current
+          // centre of mass c(t), known only after the pass; with r = x - c
+          // about the initial centre c,
+          //   sum m r0 x (r - s) = sum m r0 x r - (sum m r0) x s,
+          // s = c(t) - c,
+          // and the same for the dot product (sum m r0 is zero up to
+          // round-off: the second terms are round-off corrections).
           const unsigned int  n    = state.grid->dofs_per_cell;
           const unsigned int *dofs = state.grid->cell_dofs().data();
-          const bool          known_points =
-            control_points.size() ==
-            state.grid->relevant_global_indices().size();
-          double h = 0, along = 0, across = 0, s = 0;
+          const bool          affine =
+            affine_part && control_points.size() ==
+                             state.grid->relevant_global_indices().size();
+          double       h = 0, along = 0, across = 0, s = 0, mass = 0;
+          Tensor<1, 2> first, first_r0;
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
-              const double        m = particles.mass[p];
-              const Point<2>     &x = particles.position[p];
-              const Tensor<2, 2> &C = particles.affine[p];
-              const Tensor<1, 2>  r = x - centre;
-              h += m * cross(r, particles.velocity[p]);
+              const double        m  = particles.mass[p];
+              const Point<2>     &x  = particles.position[p];
+              const Tensor<1, 2>  r  = x - centre;
+              const Tensor<1, 2>  r0 = particles.initial_position[p] - centre;
+              const Tensor<1, 2> &v  = particles.velocity[p];
+              h += m * cross(r, v);
               // The scale is only needed once (two square roots).
               if (!initialized)
-                s += m * r.norm() * particles.velocity[p].norm();
-              if ((C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
-                   C[1][1] != 0) &&
-                  known_points)
+                s += m * r.norm() * v.norm();
+              if (affine)
                 {
-                  const unsigned int base = particles.cell[p] * n;
-                  const double      *phi  = &state.shape_values[p * n];
-                  for (unsigned int k = 0; k < n; ++k)
+                  const Tensor<2, 2> &C = particles.affine[p];
+                  if (C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
+                      C[1][1] != 0)
                     {
-                      const Tensor<1, 2> d = control_points[dofs[base + k]] - x;
-                      h += m * phi[k] * cross(d, C * d);
+                      const unsigned int base = particles.cell[p] * n;
+                      const double      *phi  = &state.shape_values[p * n];
+                      for (unsigned int k = 0; k < n; ++k)
+                        {
+                          const Tensor<1, 2> d =
+                            control_points[dofs[base + k]] - x;
+                          h += m * phi[k] * cross(d, C * d);
+                        }
                     }
                 }
-              const Tensor<1, 2> r0 = particles.initial_position[p] - centre;
-              const Tensor<1, 2> r1 = x - now;
-              across += m * cross(r0, r1);
-              along += m * (r0 * r1);
+              mass += m;
+              first += m * x;
+              first_r0 += m * r0;
+              across += m * cross(r0, r);
+              along += m * (r0 * r);
             }
-          double sums[4] = {h, across, along, s};
-          Utilities::MPI::sum(ArrayView<const double>(sums, 4),
+          double sums[9] = {h,
+                            across,
+                            along,
+                            s,
+                            mass,
+                            first[0],
+                            first[1],
+                            first_r0[0],
+                            first_r0[1]};
+          Utilities::MPI::sum(ArrayView<const double>(sums, 9),
                               comm,
-                              ArrayView<double>(sums, 4));
+                              ArrayView<double>(sums, 9));
+          // Times the inverse, as Tensor / double computes it.
+          const double       inverse_mass = 1. / sums[4];
+          const Tensor<1, 2> shift({sums[5] * inverse_mass - centre[0],
+                                    sums[6] * inverse_mass - centre[1]});
+          const Tensor<1, 2> sum_r0({sums[7], sums[8]});
+          sums[1] -= cross(sum_r0, shift);
+          sums[2] -= sum_r0 * shift;
           Values v;
           v.angular_momentum = sums[0];
           v.rotation_angle   = std::atan2(sums[1], sums[2]);
@@ -122,7 +137,7 @@ namespace psmpm
 
     template <int dim>
     void
-    RotationStatistics<dim>::add_columns(const Values &values,
+    RotationStatistics<dim>::add_columns(const Values    &values,
                                          StatisticsTable &statistics)
     {
       if (dim == 1)

@@ -5,8 +5,8 @@
 #define psmpm_postprocess_rotation_statistics_h
 
 #include <deal.II/base/point.h>
-#include <psmpm/postprocess/statistics_table.h>
 
+#include <psmpm/postprocess/statistics_table.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/simulator/state.h>
 
@@ -47,8 +47,12 @@ namespace psmpm
         double rotation_angle   = 0;
       };
 
+      /// The values of @p state; @p affine_part: whether the particles'
+      /// affine matrices may be nonzero (false for schemes that do not
+      /// carry them: they are then not read).
       Values
-      compute(const Simulator::State<dim> &state);
+      compute(const Simulator::State<dim> &state,
+              const bool                   affine_part = true);
 
       void
       add_columns(const Values &values, StatisticsTable &statistics);
