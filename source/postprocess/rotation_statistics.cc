@@ -80,20 +80,18 @@ namespace psmpm
               // The scale is only needed once (two square roots).
               if (!initialized)
                 s += m * r.norm() * v.norm();
-              if (affine)
+              // C is read only where affine (binding the reference reads
+              // nothing).
+              const Tensor<2, 2> &C = particles.affine[p];
+              if (affine && (C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
+                             C[1][1] != 0))
                 {
-                  const Tensor<2, 2> &C = particles.affine[p];
-                  if (C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
-                      C[1][1] != 0)
+                  const unsigned int base = particles.cell[p] * n;
+                  const double      *phi  = &state.shape_values[p * n];
+                  for (unsigned int k = 0; k < n; ++k)
                     {
-                      const unsigned int base = particles.cell[p] * n;
-                      const double      *phi  = &state.shape_values[p * n];
-                      for (unsigned int k = 0; k < n; ++k)
-                        {
-                          const Tensor<1, 2> d =
-                            control_points[dofs[base + k]] - x;
-                          h += m * phi[k] * cross(d, C * d);
-                        }
+                      const Tensor<1, 2> d = control_points[dofs[base + k]] - x;
+                      h += m * phi[k] * cross(d, C * d);
                     }
                 }
               mass += m;
