@@ -80,6 +80,35 @@ namespace psmpm
         }
     }
 
+    namespace
+    {
+      /// One point: values c_k + g_k . x and the constant gradients g_k.
+      /// A function of this file, so that the batch loop inlines it: the
+      /// exported one-point evaluate() is reached through the PLT even
+      /// from its own file (-fPIC code lets another library interpose an
+      /// exported function), which was a call per particle.
+      template <int dim, typename CellData>
+      inline void
+      evaluate_at(const CellData   &d,
+                  const Point<dim> &p,
+                  double           *values,
+                  Tensor<1, dim>   *gradients)
+      {
+        for (unsigned int k = 0; k <= dim; ++k)
+          {
+            // Summed left to right: in 2D the same operations as
+            // c + g_x x + g_y y, so the values are bit-identical to the
+            // earlier 2D-only implementation.
+            double v = d.constant[k];
+            for (unsigned int c = 0; c < dim; ++c)
+              v += d.gradient[k][c] * p[c];
+            values[k] = v;
+            if (gradients != nullptr)
+              gradients[k] = d.gradient[k];
+          }
+      }
+    } // namespace
+
     template <int dim>
     void
     Linear<dim>::evaluate(const unsigned int cell,
@@ -88,19 +117,7 @@ namespace psmpm
                           Tensor<1, dim>    *gradients) const
     {
       AssertIndexRange(cell, cell_data.size());
-      const CellData &d = cell_data[cell];
-      for (unsigned int k = 0; k <= dim; ++k)
-        {
-          // Summed left to right: in 2D the same operations as
-          // c + g_x x + g_y y, so the values are bit-identical to the
-          // earlier 2D-only implementation.
-          double v = d.constant[k];
-          for (unsigned int c = 0; c < dim; ++c)
-            v += d.gradient[k][c] * p[c];
-          values[k] = v;
-          if (gradients != nullptr)
-            gradients[k] = d.gradient[k];
-        }
+      evaluate_at(cell_data[cell], p, values, gradients);
     }
 
     template <int dim>
@@ -111,13 +128,15 @@ namespace psmpm
                           double             *values,
                           Tensor<1, dim>     *gradients) const
     {
-      // Qualified call: no virtual dispatch per point.
       for (unsigned int i = 0; i < n; ++i)
-        Linear<dim>::evaluate(cells[i],
-                              points[i],
-                              values + (dim + 1) * i,
-                              gradients != nullptr ? gradients + (dim + 1) * i :
-                                                     nullptr);
+        {
+          AssertIndexRange(cells[i], cell_data.size());
+          evaluate_at(cell_data[cells[i]],
+                      points[i],
+                      values + (dim + 1) * i,
+                      gradients != nullptr ? gradients + (dim + 1) * i :
+                                             nullptr);
+        }
     }
 
     template <int dim>

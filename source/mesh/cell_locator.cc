@@ -257,7 +257,7 @@ namespace psmpm
 
     template <int dim>
     unsigned int
-    CellLocator<dim>::locate(const Point<dim> &p, const unsigned int hint) const
+    CellLocator<dim>::walk(const Point<dim> &p, const unsigned int hint) const
     {
       if (quads)
         return contains(hint, p) ? hint : search_cartesian(p);

@@ -4,12 +4,43 @@
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/point_accumulation.h>
 
+#include <type_traits>
+
 namespace psmpm
 {
   namespace Simulator
   {
     namespace ParticleLoops
     {
+      namespace
+      {
+        /**
+         * Call @p f with the number of functions per cell @p n as a
+         * compile-time constant for the common counts (P1: 3, bilinear: 4,
+         * Powell-Sabin and biquadratic: 9; an std::integral_constant), else
+         * as the run-time value: the loops over a cell's functions then
+         * have fixed trip counts that the compiler unrolls, as in
+         * add_point(). The same operations in the same order either way,
+         * so the results are bit-identical.
+         */
+        template <typename F>
+        void
+        with_functions_per_cell(const unsigned int n, const F &f)
+        {
+          switch (n)
+            {
+              case 3:
+                return f(std::integral_constant<unsigned int, 3>());
+              case 4:
+                return f(std::integral_constant<unsigned int, 4>());
+              case 9:
+                return f(std::integral_constant<unsigned int, 9>());
+              default:
+                return f(n);
+            }
+        }
+      } // namespace
+
       template <int dim>
       void
       particles_to_cells(State<dim>  &state,
@@ -64,24 +95,25 @@ namespace psmpm
         if (momentum_to_grid)
           grid.zero_cell_rhs();
         auto               &particles = state.particles;
-        const unsigned int  n         = grid.dofs_per_cell;
         const unsigned int *dofs      = grid.cell_dofs().data();
         Tensor<1, dim>     *rhs       = grid.cell_arrays().rhs.data();
-        for (std::size_t p = 0; p < particles.size(); ++p)
-          {
-            const unsigned int base = particles.cell[p] * n;
-            const double      *phi  = &state.shape_values[p * n];
-            Tensor<1, dim>     a;
-            for (unsigned int k = 0; k < n; ++k)
-              a += phi[k] * state.grid_acceleration[dofs[base + k]];
-            particles.velocity[p] += state.dt * a;
-            if (!momentum_to_grid)
-              continue;
-            const Tensor<1, dim> momentum =
-              particles.mass[p] * particles.velocity[p];
-            for (unsigned int k = 0; k < n; ++k)
-              rhs[base + k] += phi[k] * momentum;
-          }
+        with_functions_per_cell(grid.dofs_per_cell, [&](const auto n) {
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int base = particles.cell[p] * n;
+              const double      *phi  = &state.shape_values[p * n];
+              Tensor<1, dim>     a;
+              for (unsigned int k = 0; k < n; ++k)
+                a += phi[k] * state.grid_acceleration[dofs[base + k]];
+              particles.velocity[p] += state.dt * a;
+              if (!momentum_to_grid)
+                continue;
+              const Tensor<1, dim> momentum =
+                particles.mass[p] * particles.velocity[p];
+              for (unsigned int k = 0; k < n; ++k)
+                rhs[base + k] += phi[k] * momentum;
+            }
+        });
       }
 
 
@@ -91,38 +123,39 @@ namespace psmpm
       move_particles(State<dim> &state, std::vector<Tensor<2, dim>> &increments)
       {
         auto               &particles = state.particles;
-        const unsigned int  n         = state.grid->dofs_per_cell;
         const unsigned int *dofs      = state.grid->cell_dofs().data();
         const double        dt        = state.dt;
         Particles::resize_per_particle(increments, particles);
-        for (std::size_t p = 0; p < particles.size(); ++p)
-          {
-            const unsigned int    base = particles.cell[p] * n;
-            const double         *phi  = &state.shape_values[p * n];
-            const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
-            Tensor<1, dim>        v, a;
-            Tensor<2, dim>        L; // velocity gradient, L_ij = dv_i/dx_j
-            for (unsigned int k = 0; k < n; ++k)
-              {
-                const unsigned int    i  = dofs[base + k];
-                const Tensor<1, dim> &vi = state.grid_velocity[i];
-                v += phi[k] * vi;
-                if constexpr (velocity_update == VelocityUpdate::flip)
-                  a += phi[k] * state.grid_acceleration[i];
-                L += outer_product(vi, grad[k]);
-              }
-            if constexpr (velocity_update == VelocityUpdate::flip)
-              particles.velocity[p] += dt * a;
-            else if constexpr (velocity_update == VelocityUpdate::grid)
-              particles.velocity[p] = v;
-            // OTM: sum_a x_a,k+1 N_a,k(x_p) = x_p + dt sum_a u_a N_a,k(x_p)
-            // (the functions reproduce x); the increment form keeps the
-            // round-off relative to the step.
-            increments[p]           = dt * L;
-            const Tensor<1, dim> du = dt * v;
-            particles.displacement[p] += du;
-            particles.position[p] += du;
-          }
+        with_functions_per_cell(state.grid->dofs_per_cell, [&](const auto n) {
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              const unsigned int    base = particles.cell[p] * n;
+              const double         *phi  = &state.shape_values[p * n];
+              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
+              Tensor<1, dim>        v, a;
+              Tensor<2, dim>        L; // velocity gradient, L_ij = dv_i/dx_j
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  const unsigned int    i  = dofs[base + k];
+                  const Tensor<1, dim> &vi = state.grid_velocity[i];
+                  v += phi[k] * vi;
+                  if constexpr (velocity_update == VelocityUpdate::flip)
+                    a += phi[k] * state.grid_acceleration[i];
+                  L += outer_product(vi, grad[k]);
+                }
+              if constexpr (velocity_update == VelocityUpdate::flip)
+                particles.velocity[p] += dt * a;
+              else if constexpr (velocity_update == VelocityUpdate::grid)
+                particles.velocity[p] = v;
+              // OTM: sum_a x_a,k+1 N_a,k(x_p) = x_p + dt sum_a u_a N_a,k(x_p)
+              // (the functions reproduce x); the increment form keeps the
+              // round-off relative to the step.
+              increments[p]           = dt * L;
+              const Tensor<1, dim> du = dt * v;
+              particles.displacement[p] += du;
+              particles.position[p] += du;
+            }
+        });
       }
 
 

@@ -85,9 +85,14 @@ namespace psmpm
       }
 
       /// Cell containing @p p, starting the walk at @p hint; invalid if
-      /// the point lies outside the mesh.
+      /// the point lies outside the mesh. Inline for the common case of a
+      /// particle still in its cell (a call per particle and step
+      /// otherwise); the walk itself is walk().
       unsigned int
-      locate(const Point<dim> &p, const unsigned int hint) const;
+      locate(const Point<dim> &p, const unsigned int hint) const
+      {
+        return !quads && contains(hint, p) ? hint : walk(p, hint);
+      }
 
       /// Cell containing @p p by the bucket (2D) or binary (1D) search;
       /// invalid if outside.
@@ -103,6 +108,11 @@ namespace psmpm
       }
 
     private:
+      /// locate(p, hint) beyond the hint cell: the walk through
+      /// neighbours, or the search.
+      unsigned int
+      walk(const Point<dim> &p, const unsigned int hint) const;
+
       static constexpr double tolerance = 1e-12;
 
       std::vector<SimplexMap<dim>> maps;

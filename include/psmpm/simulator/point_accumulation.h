@@ -29,7 +29,7 @@ namespace psmpm
        * instead of 81 products per Powell-Sabin particle.
        */
       template <int dim, unsigned int N, bool upper>
-      inline void
+      DEAL_II_ALWAYS_INLINE inline void
       add_point_fixed(const double                   m,
                       const Tensor<1, dim>          &f,
                       const double                   volume,
@@ -62,8 +62,10 @@ namespace psmpm
      * reconstruction): lumped mass m phi_k, consistent mass m phi_k phi_l
      * (if @p mass is not null) and right-hand side phi_k f - V sigma
      * grad phi_k, for the @p n functions of the cell whose arrays start
-     * at @p lumped, @p mass (row-major n x n) and @p rhs. Inline: called
-     * once per particle in the hottest loop of a step; the common counts
+     * at @p lumped, @p mass (row-major n x n) and @p rhs. Always inline:
+     * called once per particle in the hottest loop of a step (GCC kept it
+     * out of line, and a shared library reaches an out-of-line template
+     * through the PLT: two indirect calls per particle); the common counts
      * (P1: 3, bilinear: 4, Powell-Sabin and biquadratic: 9) go to a
      * compile-time loop, the switch on @p n is the same branch for every
      * particle of a run. With @p upper the mass block's lower triangle may
@@ -71,7 +73,7 @@ namespace psmpm
      * the last point.
      */
     template <int dim, bool upper = false>
-    inline void
+    DEAL_II_ALWAYS_INLINE inline void
     add_point(const unsigned int             n,
               const double                   m,
               const Tensor<1, dim>          &f,
