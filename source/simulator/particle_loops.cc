@@ -21,7 +21,9 @@ namespace psmpm
          * as the run-time value: the loops over a cell's functions then
          * have fixed trip counts that the compiler unrolls, as in
          * add_point(). The same operations in the same order either way,
-         * so the results are bit-identical.
+         * so the results are bit-identical. add_point() keeps its own
+         * switch: routed through this function (a lambda per particle),
+         * particle to grid took 22 more instructions per particle.
          */
         template <typename F>
         void
