@@ -4,44 +4,15 @@
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/point_accumulation.h>
 
-#include <type_traits>
-
 namespace psmpm
 {
   namespace Simulator
   {
     namespace ParticleLoops
     {
-      namespace
-      {
-        /**
-         * Call @p f with the number of functions per cell @p n as a
-         * compile-time constant for the common counts (P1: 3, bilinear: 4,
-         * Powell-Sabin and biquadratic: 9; an std::integral_constant), else
-         * as the run-time value: the loops over a cell's functions then
-         * have fixed trip counts that the compiler unrolls, as in
-         * add_point(). The same operations in the same order either way,
-         * so the results are bit-identical. add_point() keeps its own
-         * switch: routed through this function (a lambda per particle),
-         * particle to grid took 22 more instructions per particle.
-         */
-        template <typename F>
-        void
-        with_functions_per_cell(const unsigned int n, const F &f)
-        {
-          switch (n)
-            {
-              case 3:
-                return f(std::integral_constant<unsigned int, 3>());
-              case 4:
-                return f(std::integral_constant<unsigned int, 4>());
-              case 9:
-                return f(std::integral_constant<unsigned int, 9>());
-              default:
-                return f(n);
-            }
-        }
-      } // namespace
+      // Loops over a cell's functions with the common counts as
+      // compile-time constants (point_accumulation.h).
+      using internal::with_functions_per_cell;
 
       template <int dim>
       void

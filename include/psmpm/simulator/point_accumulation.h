@@ -18,6 +18,32 @@ namespace psmpm
     namespace internal
     {
       /**
+       * Call @p f with the number of functions per cell @p n as a
+       * compile-time constant (an std::integral_constant) for the common
+       * counts (P1: 3, bilinear: 4, Powell-Sabin and biquadratic: 9), else
+       * with @p n itself: the loops over a cell's functions in @p f then
+       * have fixed trip counts that the compiler unrolls. The same
+       * operations in the same order either way (bit-identical results);
+       * the switch is the same branch for every particle of a run.
+       */
+      template <typename F>
+      DEAL_II_ALWAYS_INLINE inline void
+      with_functions_per_cell(const unsigned int n, const F &f)
+      {
+        switch (n)
+          {
+            case 3:
+              return f(std::integral_constant<unsigned int, 3>());
+            case 4:
+              return f(std::integral_constant<unsigned int, 4>());
+            case 9:
+              return f(std::integral_constant<unsigned int, 9>());
+            default:
+              return f(n);
+          }
+      }
+
+      /**
        * add_point() for @p N functions per cell, known at compile time:
        * fixed trip counts and restrict-qualified arrays let the compiler
        * unroll and vectorise the 81-entry block of a Powell-Sabin cell
@@ -85,42 +111,37 @@ namespace psmpm
               double                        *mass,
               Tensor<1, dim>                *rhs)
     {
-      // The counts with a compile-time loop; N is an integral_constant.
-      const auto fixed = [&](const auto N) {
-        internal::add_point_fixed<dim, std::decay_t<decltype(N)>::value, upper>(
-          m,
-          f,
-          volume,
-          stress,
-          phi,
-          grad,
-          lumped,
-          mass,
-          rhs);
-      };
-      switch (n)
-        {
-          case 3:
-            return fixed(std::integral_constant<unsigned int, 3>());
-          case 4:
-            return fixed(std::integral_constant<unsigned int, 4>());
-          case 9:
-            return fixed(std::integral_constant<unsigned int, 9>());
-          default:
-            break;
-        }
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          lumped[k] += m * phi[k];
-          rhs[k] += phi[k] * f - volume * (stress * grad[k]);
-          if (mass != nullptr)
-            {
-              double      *row = mass + k * n;
-              const double mk  = m * phi[k];
-              for (unsigned int l = upper ? k : 0; l < n; ++l)
-                row[l] += mk * phi[l];
-            }
-        }
+      // The lambda is always inline too: called per particle, an
+      // out-of-line lambda cost 22 instructions per particle.
+      internal::with_functions_per_cell(
+        n,
+        [&](const auto N) DEAL_II_ALWAYS_INLINE {
+          if constexpr (std::is_integral_v<std::decay_t<decltype(N)>>)
+            for (unsigned int k = 0; k < N; ++k)
+              {
+                lumped[k] += m * phi[k];
+                rhs[k] += phi[k] * f - volume * (stress * grad[k]);
+                if (mass != nullptr)
+                  {
+                    double      *row = mass + k * N;
+                    const double mk  = m * phi[k];
+                    for (unsigned int l = upper ? k : 0; l < N; ++l)
+                      row[l] += mk * phi[l];
+                  }
+              }
+          else
+            internal::add_point_fixed<dim,
+                                      std::decay_t<decltype(N)>::value,
+                                      upper>(m,
+                                             f,
+                                             volume,
+                                             stress,
+                                             phi,
+                                             grad,
+                                             lumped,
+                                             mass,
+                                             rhs);
+        });
     }
 
     /**
