@@ -257,16 +257,30 @@ end
         prm.leave_subsection();
       }
 
-      /// Deterministic results with 5 significant digits.
+      /// Deterministic results of each Problem for the scene tests: its
+      /// sizes as they are, then its errors with 5 significant digits
+      /// (those in the summary).
       void
-      print_test_output(const Postprocess::Summary &summary, std::ostream &out)
+      print_test_output(const std::string          &problem,
+                        const Postprocess::Summary &summary,
+                        std::ostream               &out)
       {
-        for (const std::string key :
-             {"steps", "n_dofs", "n_particles", "end_time"})
+        using Keys = std::vector<std::string>;
+        const Keys sizes =
+          problem == "mpm" ?
+            Keys{"steps", "n_dofs", "n_particles", "end_time"} :
+          problem == "mass matrix study" ?
+            Keys{"n_rows", "most_cg_iterations", "most_pmg_vcycles"} :
+            Keys{"n_dofs", "n_cells"};
+        const Keys errors =
+          problem == "mpm"               ? Keys{"errors.displacement_L2",
+                                  "errors.velocity_L2",
+                                  "errors.stress_L2"} :
+          problem == "mass matrix study" ? Keys{"largest_condition_number"} :
+                                           Keys{"errors.L2"};
+        for (const std::string &key : sizes)
           out << key << " = " << summary.get_number(key) << "\n";
-        for (const std::string key : {"errors.displacement_L2",
-                                      "errors.velocity_L2",
-                                      "errors.stress_L2"})
+        for (const std::string &key : errors)
           if (summary.has(key))
             {
               char buf[64];
@@ -662,7 +676,7 @@ end
                 {
                   std::cout << "status = " << Simulator::status_name(status)
                             << "\n";
-                  print_test_output(summary, std::cout);
+                  print_test_output(problem, summary, std::cout);
                 }
               else
                 std::cout << "psmpm: " << summary.to_json();

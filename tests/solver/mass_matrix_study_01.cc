@@ -3,8 +3,8 @@
 // to 4.4) at small sizes. The Kronecker product of the univariate mass
 // matrices equals the 2D matrix assembled by tensor Gauss quadrature, and
 // its condition number (dense 2D eigenvalues) is cond(M1)^2; then the
-// condition numbers, CG iterations and p-multigrid V-cycles for p = 1..3
-// against the chapter's values with the tolerances of doc/solver_study.md.
+// condition numbers, CG iterations and p-multigrid V-cycles for p = 1..5,
+// 1/h = 8..32, against the chapter's values with issue 11's tolerances.
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -111,43 +111,82 @@ main(int argc, char **argv)
       PSMPM_CHECK(out, std::abs(c2 - c1 * c1) < 1e-10 * c2);
     }
 
-    // The chapter's tables, p = 1..3.
+    // The chapter's tables, p = 1..5, 1/h = 8..32 (Dirichlet conditions,
+    // right-hand side M f with f constant: the study's default).
     const std::map<std::pair<unsigned int, unsigned int>, double> table_4_2 = {
       {{1, 8}, 7.38},
       {{1, 16}, 8.55},
+      {{1, 32}, 8.89},
       {{2, 8}, 52.1},
       {{2, 16}, 55.1},
+      {{2, 32}, 56.0},
       {{3, 8}, 440},
-      {{3, 16}, 424}};
-    const std::map<unsigned int, double> table_4_3 = {{1, 18},
-                                                      {2, 34},
-                                                      {3, 68}};
+      {{3, 16}, 424},
+      {{3, 32}, 420},
+      {{4, 8}, 3770},
+      {{4, 16}, 3360},
+      {{4, 32}, 3290},
+      {{5, 8}, 33000},
+      {{5, 16}, 26100},
+      {{5, 32}, 25200}};
+    const std::map<std::pair<unsigned int, unsigned int>, double> table_4_3 = {
+      {{1, 16}, 18},
+      {{1, 32}, 18},
+      {{2, 16}, 34},
+      {{2, 32}, 46},
+      {{3, 16}, 68},
+      {{3, 32}, 93},
+      {{4, 16}, 93},
+      {{4, 32}, 178},
+      {{5, 16}, 156},
+      {{5, 32}, 242}};
     const std::map<std::pair<unsigned int, unsigned int>, double> table_4_4 = {
       {{1, 8}, 1},
       {{1, 16}, 1},
+      {{1, 32}, 1},
       {{2, 8}, 4},
       {{2, 16}, 4},
+      {{2, 32}, 4},
       {{3, 8}, 15},
-      {{3, 16}, 12}};
+      {{3, 16}, 12},
+      {{3, 32}, 10},
+      {{4, 8}, 22},
+      {{4, 16}, 17},
+      {{4, 32}, 13},
+      {{5, 8}, 58},
+      {{5, 16}, 38},
+      {{5, 32}, 27}};
 
     Solver::MassMatrixStudy study;
-    for (const unsigned int p : {1u, 2u, 3u})
-      for (const unsigned int n : {8u, 16u})
+    for (const unsigned int p : {1u, 2u, 3u, 4u, 5u})
+      for (const unsigned int n : {8u, 16u, 32u})
         {
           const auto d = study.compute(p, n, true);
-          const auto f = study.compute(p, n, false);
           out << "p " << p << " 1/h " << n << ": condition number "
               << std::setprecision(4) << d.condition_number << ", CG "
               << d.cg_iterations << " (jacobi " << d.jacobi_cg_iterations
-              << "), V-cycles " << d.pmg_vcycles << " with and "
-              << f.pmg_vcycles << " without Dirichlet conditions" << std::endl;
+              << "), V-cycles " << d.pmg_vcycles << std::endl;
+          // The tolerances of issue 11 (Tables 4.2, 4.3, 4.4: 2, 10, 30 %).
           PSMPM_CHECK(out,
                       within(d.condition_number, table_4_2.at({p, n}), 0.02));
-          if (n == 16)
-            PSMPM_CHECK(out, within(d.cg_iterations, table_4_3.at(p), 0.10));
-          // The chapter's V-cycles are those without boundary conditions
-          // (doc/solver_study.md): within 35 % there.
-          PSMPM_CHECK(out, within(f.pmg_vcycles, table_4_4.at({p, n}), 0.35));
+          if (n > 8)
+            PSMPM_CHECK(out,
+                        within(d.cg_iterations, table_4_3.at({p, n}), 0.10));
+          PSMPM_CHECK(out, within(d.pmg_vcycles, table_4_4.at({p, n}), 0.30));
         }
+
+    // The load vector of the constant (its L2 projection) instead: the
+    // same matrices need far more V-cycles at p = 5, which is how the
+    // right-hand side of the chapter was told apart.
+    Solver::MassMatrixStudy load_vector;
+    ParameterHandler        prm;
+    Solver::MassMatrixStudy::declare_parameters(prm);
+    prm.parse_input_from_string(
+      "subsection Mass matrix study\n set Right-hand side = load vector\nend");
+    load_vector.parse_parameters(prm);
+    const auto l = load_vector.compute(5, 16, true);
+    out << "load vector, p 5 1/h 16: CG " << l.cg_iterations << ", V-cycles "
+        << l.pmg_vcycles << std::endl;
+    PSMPM_CHECK(out, l.pmg_vcycles > 3 * table_4_4.at({5, 16}));
   });
 }

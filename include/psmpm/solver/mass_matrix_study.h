@@ -53,9 +53,9 @@ namespace psmpm
      * each degree and mesh width their condition number, the iterations of
      * CG without, with Jacobi and with AMG preconditioning, and the
      * V-cycles of p-multigrid, all to a relative residual of Tolerance
-     * from a zero start. (The chapter's condition numbers are those with
-     * Dirichlet conditions; its V-cycle counts are close to those without,
-     * see doc/solver_study.md.)
+     * from a zero start. The chapter's values are those with Dirichlet
+     * conditions and the right-hand side M f, f the constant 9.81 (its
+     * "constant force vector"; see doc/solver_study.md).
      *
      * The 2D matrices are Kronecker products M1 (x) M1 of the univariate
      * ones (exact: rho = 1, integrand and Gauss rule factor), so the
@@ -126,9 +126,10 @@ namespace psmpm
       std::vector<unsigned int> degrees   = {1, 2, 3, 4, 5};
       std::vector<unsigned int> inverse_h = {8, 16, 32, 64, 128};
       double                    tolerance = 1e-8;
-      /// "load vector": b_i = g int phi_i (a constant body force g);
-      /// "constant": b_i = g.
-      std::string right_hand_side = "load vector";
+      /// "row sums": b = M f, f_j = g (the solution is the constant g; the
+      /// chapter's setting); "load vector": b_i = g int phi_i (a constant
+      /// body force g); "constant": b_i = g.
+      std::string right_hand_side = "row sums";
       /// Rows with (true) and without (false) the boundary functions.
       std::vector<bool> dirichlet      = {true, false};
       unsigned int      max_iterations = 20000;
