@@ -951,6 +951,22 @@ namespace psmpm
       exchange.owned_to_relevant(owned_vector.begin(), local);
     }
 
+    namespace
+    {
+      /// The owned entries of @p ghosted (owned + writable ghosts, after
+      /// compress) into the owned vector @p owned: the copy that
+      /// owned = ghosted makes, without the re-initialisation it does
+      /// first (which cost more than a small system's whole solve).
+      void
+      copy_owned(const TrilinosWrappers::MPI::Vector &ghosted,
+                 TrilinosWrappers::MPI::Vector       &owned)
+      {
+        AssertDimension(ghosted.locally_owned_size(),
+                        owned.locally_owned_size());
+        std::copy(ghosted.begin(), ghosted.end(), owned.begin());
+      }
+    } // namespace
+
     template <int dim>
     const std::vector<double> &
     GridSystem<dim>::particle_diagonal()
@@ -964,7 +980,7 @@ namespace psmpm
         for (unsigned int k = 0; k < n; ++k)
           cell_scratch[c * n + k] = cells.mass[(c * n + k) * n + k];
       scatter(cell_scratch.data(), 1, 0, writable);
-      solution_vector = writable;
+      copy_owned(writable, solution_vector);
       to_local(solution_vector, diagonal_scratch);
       return diagonal_scratch;
     }
@@ -976,7 +992,7 @@ namespace psmpm
       // Row sums of the condensed matrix C^T M C are C^T (M 1) (C 1 = 1:
       // the ties are convex combinations), the lumped mass of the space.
       scatter(cells.lumped.data(), 1, 0, writable, true);
-      lumped = writable;
+      copy_owned(writable, lumped);
       to_local(lumped, local_lumped);
 
       // Statistics of the diagonal over supported DoFs.
@@ -1019,11 +1035,22 @@ namespace psmpm
       if (mass_strategy->prepare(*this, diagonal))
         build_sparsity();
       together = components_together();
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          bool all = only_dirichlet[d];
+          for (const unsigned int l : owned_to_relevant)
+            all = all && constrained[d][l];
+          fully_fixed[d] =
+            Utilities::MPI::min(static_cast<unsigned int>(all), comm) == 1;
+        }
       if (together)
         assemble_shared_matrix();
       else
         for (unsigned int d = 0; d < dim; ++d)
-          assemble_matrix(d);
+          if (fully_fixed[d])
+            factored[d] = false;
+          else
+            assemble_matrix(d);
     }
 
     template <int dim>
@@ -1299,7 +1326,7 @@ namespace psmpm
         {
           // Tensor<1,dim> stores its components contiguously.
           scatter(&cells.rhs[0][0], dim, d, writable);
-          rhs                  = writable;
+          copy_owned(writable, rhs);
           double *const values = rhs.begin();
           for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
             if (constrained[d][owned_to_relevant[j]])
@@ -1323,7 +1350,7 @@ namespace psmpm
                                                                writable);
             }
           writable.compress(VectorOperation::add);
-          rhs = writable;
+          copy_owned(writable, rhs);
         }
       // x holds the guess (zero on constrained DoFs).
       const double norm = rhs.l2_norm();
@@ -1395,6 +1422,8 @@ namespace psmpm
               const double *const column = (*solution_columns)[d];
               std::copy(column, column + owned_to_relevant.size(), x.begin());
             }
+          else if (uses_matrix() && !lumped_only && fully_fixed[d])
+            x = 0;
           else if (uses_matrix() && !lumped_only)
             {
               double *const v = x.begin();

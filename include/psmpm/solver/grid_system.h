@@ -289,7 +289,8 @@ namespace psmpm
       /// unit diagonal). When the components are solved together (more
       /// than one component, Dirichlet constraints only, (block) Jacobi
       /// CG), matrix 0 is the matrix without constraints that they share
-      /// and the others are not assembled.
+      /// and the others are not assembled; nor is the matrix of a
+      /// component that Dirichlet conditions fix everywhere.
       const TrilinosWrappers::SparseMatrix &
       mass_matrix(const unsigned int d) const
       {
@@ -503,7 +504,11 @@ namespace psmpm
       /// every assemble_mass()): then matrix[0] is the unconstrained M and
       /// matrix[d > 0] is not assembled; per component the locally owned
       /// rows (owned order) it fixes, and the solver's columns.
-      bool                                   together = false;
+      bool together = false;
+      /// Per component, whether Dirichlet conditions fix every DoF on
+      /// every rank (e.g. y of a bar between rollers): its solution is
+      /// zero, and its matrix is neither assembled nor solved.
+      std::array<bool, dim>                  fully_fixed{};
       std::vector<std::vector<unsigned int>> fixed_rows;
       ComponentCG                            component_cg;
       std::unique_ptr<Epetra_MultiVector>    rhs_columns, solution_columns;
