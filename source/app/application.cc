@@ -269,9 +269,11 @@ end
         const Keys sizes =
           problem == "mpm" ?
             Keys{"steps", "n_dofs", "n_particles", "end_time"} :
-          problem == "mass matrix study" ?
-            Keys{"n_rows", "most_cg_iterations", "most_pmg_vcycles"} :
-            Keys{"n_dofs", "n_cells"};
+          problem == "mass matrix study" ? Keys{"n_rows",
+                                                "most_cg_iterations",
+                                                "most_pmg_vcycles",
+                                                "n_not_converged"} :
+                                           Keys{"n_dofs", "n_cells"};
         const Keys errors =
           problem == "mpm"               ? Keys{"errors.displacement_L2",
                                   "errors.velocity_L2",

@@ -7,6 +7,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <psmpm/base/checked_file.h>
+#include <psmpm/base/format.h>
 #include <psmpm/basis/bspline_1d.h>
 #include <psmpm/solver/cg_iterations.h>
 #include <psmpm/solver/mass_matrix_study.h>
@@ -227,6 +228,22 @@ namespace psmpm
       multigrid.max_cycles       = prm.get_integer("Maximum cycles");
       prm.leave_subsection();
       prm.leave_subsection();
+      // The patterns admit the ends of their ranges; these cannot be met
+      // (a residual of zero) or do nothing (no damping).
+      const std::pair<const char *, double> open_ranges[] = {
+        {"Tolerance", tolerance},
+        {"Multigrid/Coarse tolerance", multigrid.coarse_tolerance}};
+      for (const auto &[name, value] : open_ranges)
+        AssertThrow(value > 0 && value < 1,
+                    ExcMessage("Mass matrix study/" + std::string(name) +
+                               " = " + prm_value(value) +
+                               ": a relative residual must lie strictly "
+                               "between 0 and 1 (e.g. 1e-8)."));
+      AssertThrow(multigrid.jacobi_damping > 0 && multigrid.jacobi_damping < 2,
+                  ExcMessage("Mass matrix study/Multigrid/Jacobi damping = " +
+                             prm_value(multigrid.jacobi_damping) +
+                             ": must lie strictly between 0 and 2 (0 does "
+                             "not smooth, 2 and above diverge)."));
       for (const unsigned int n : inverse_h)
         for (const unsigned int p : degrees)
           AssertThrow(n + p > 2,
@@ -383,10 +400,15 @@ namespace psmpm
     {
       const auto   rows              = compute();
       double       largest_condition = 0;
-      unsigned int most_cg = 0, most_cycles = 0;
+      unsigned int most_cg = 0, most_cycles = 0, not_converged = 0;
       for (const auto &r : rows)
         {
           largest_condition = std::max(largest_condition, r.condition_number);
+          for (const unsigned int c : {r.cg_iterations,
+                                       r.jacobi_cg_iterations,
+                                       r.amg_cg_iterations,
+                                       r.pmg_vcycles})
+            not_converged += (c == numbers::invalid_unsigned_int);
           // A count that did not converge is invalid_unsigned_int: not
           // the largest count.
           if (r.cg_iterations != numbers::invalid_unsigned_int)
@@ -398,6 +420,9 @@ namespace psmpm
       summary.set("largest_condition_number", largest_condition);
       summary.set_integer("most_cg_iterations", most_cg);
       summary.set_integer("most_pmg_vcycles", most_cycles);
+      // Solves that reached their limit ('-' in the table): a study with
+      // too few iterations must not look like one without.
+      summary.set_integer("n_not_converged", not_converged);
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       std::filesystem::create_directories(output_directory);

@@ -117,6 +117,19 @@ main(int argc, char **argv)
                          "subsection Transfer\n set Reconstruction = taylor least squares\nend\n",
               {},
               {"Transfer/Reconstruction", "cartesian", "case.prm"}},
+             {"mass matrix study with tolerance 0",
+              head + "set Problem = mass matrix study\n"
+                              "subsection Mass matrix study\n"
+                              " set Tolerance = 0\nend\n",
+              {},
+              {"Mass matrix study/Tolerance", "0", "case.prm"}},
+             {"mass matrix study without damping",
+              head + "set Problem = mass matrix study\n"
+                              "subsection Mass matrix study\n"
+                              " subsection Multigrid\n"
+                              "  set Jacobi damping = 0\n end\nend\n",
+              {},
+              {"Jacobi damping", "case.prm"}},
   };
   for (const auto &c : cases)
     {
