@@ -328,8 +328,11 @@ namespace psmpm
       else if (right_hand_side == "row sums")
         {
           // With the boundary functions removed this differs from the
-          // load vector near the boundary: the solution is the constant,
-          // whose error components every level of p-multigrid represents.
+          // load vector near the boundary: the solution is the smooth
+          // coefficient vector 9.81, while the load vector's (the L2
+          // projection of 9.81 onto functions that vanish on the boundary)
+          // oscillates next to the boundary, where CG and p-multigrid
+          // converge slowly (doc/solver_study.md).
           Vector<double> f(M.m());
           f = gravity;
           M.vmult(b, f);
