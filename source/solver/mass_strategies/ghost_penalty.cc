@@ -190,8 +190,8 @@ namespace psmpm
                       Utilities::MPI::this_mpi_process(grid.get_communicator()))
                   continue;
                 Face face;
-                face.cells = {cell->active_cell_index(),
-                              other->active_cell_index()};
+                face.cells = {
+                  {cell->active_cell_index(), other->active_cell_index()}};
                 // Patch DoFs and, per cell, the map cell DoF -> patch.
                 std::array<std::vector<unsigned int>, 2> map;
                 std::vector<types::global_dof_index>     patch;
