@@ -1035,14 +1035,17 @@ namespace psmpm
       if (mass_strategy->prepare(*this, diagonal))
         build_sparsity();
       together = components_together();
+      // One reduction for all components: this runs every step.
+      unsigned int here[dim], everywhere[dim];
       for (unsigned int d = 0; d < dim; ++d)
         {
-          bool all = only_dirichlet[d];
+          here[d] = only_dirichlet[d];
           for (const unsigned int l : owned_to_relevant)
-            all = all && constrained[d][l];
-          fully_fixed[d] =
-            Utilities::MPI::min(static_cast<unsigned int>(all), comm) == 1;
+            here[d] = here[d] && constrained[d][l];
         }
+      Utilities::MPI::min(here, comm, everywhere);
+      for (unsigned int d = 0; d < dim; ++d)
+        fully_fixed[d] = everywhere[d] == 1;
       if (together)
         assemble_shared_matrix();
       else

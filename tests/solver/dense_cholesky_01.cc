@@ -102,6 +102,28 @@ namespace
     PSMPM_CHECK(out, r.l2_norm() <= 1e-13 * b.l2_norm());
     PSMPM_CHECK(out, y.l2_norm() <= 1e-9 * x.l2_norm());
   }
+  /// Runs @p scene with @p overrides into @p directory, checks that it
+  /// completes, and returns its statistics.
+  StatisticsTable
+  run_scene(std::ostream                   &out,
+            const std::string              &scene,
+            const std::vector<std::string> &overrides,
+            const std::string              &directory)
+  {
+    auto solver = make_scene_solver(scene, overrides);
+    std::filesystem::create_directories(directory);
+    const auto status = solver->run(directory);
+    PSMPM_CHECK(out, status == psmpm::Simulator::Status::completed);
+    return StatisticsTable(directory);
+  }
+
+  /// The last displacement error of a run.
+  double
+  final_error(const StatisticsTable &s)
+  {
+    const auto e = s.column("displacement_L2");
+    return e.empty() ? std::nan("") : e.back();
+  }
 } // namespace
 
 int
@@ -141,25 +163,20 @@ main(int argc, char **argv)
   double error[2];
   for (const unsigned int size : {1000u, 0u})
     {
-      auto              solver = make_scene_solver("vibrating_bar_large.prm",
-                                      {"Time/End time=0.5",
-                                                    "Output/Interval=0",
-                                                    "Mass matrix/Direct solver size=" +
-                                                      std::to_string(size)});
-      const std::string dir    = "run-" + std::to_string(size);
-      std::filesystem::create_directories(dir);
-      const auto status = solver->run(dir);
-      PSMPM_CHECK(out, status == psmpm::Simulator::Status::completed);
-      const StatisticsTable s(dir);
-      const auto            cg    = s.column("cg_iterations");
-      double                total = 0;
-      for (const double c : cg)
+      const StatisticsTable s =
+        run_scene(out,
+                  "vibrating_bar_large.prm",
+                  {"Time/End time=0.5",
+                   "Output/Interval=0",
+                   "Mass matrix/Direct solver size=" + std::to_string(size)},
+                  "run-" + std::to_string(size));
+      double total = 0;
+      for (const double c : s.column("cg_iterations"))
         total += c;
       out << "direct solver size " << size << ": CG iterations "
           << (total > 0 ? "> 0" : "0") << std::endl;
       PSMPM_CHECK(out, (size > 0) == (total == 0));
-      const auto e            = s.column("displacement_L2");
-      error[size > 0 ? 0 : 1] = e.empty() ? std::nan("") : e.back();
+      error[size > 0 ? 0 : 1] = final_error(s);
     }
   PSMPM_CHECK(out, std::abs(error[0] / error[1] - 1) < 1e-8);
 
@@ -169,28 +186,25 @@ main(int argc, char **argv)
       double bar_error[2];
       for (const unsigned int size : {1000u, 0u})
         {
-          auto solver           = make_scene_solver("vibrating_bar_small.prm",
-                                          {"Mesh/Type=diagonal",
-                                                     "Mesh/Blocks x=8",
-                                                     "Basis/Type=" + basis,
-                                                     "Time/End time=0.005",
-                                                     "Output/Interval=0",
-                                                     "Mass matrix/Direct solver size=" +
-                                                       std::to_string(size)});
-          const std::string dir = "bar-" + basis + "-" + std::to_string(size);
-          std::filesystem::create_directories(dir);
-          PSMPM_CHECK(out,
-                      solver->run(dir) == psmpm::Simulator::Status::completed);
-          const StatisticsTable s(dir);
-          double                largest = 0;
+          const StatisticsTable s =
+            run_scene(out,
+                      "vibrating_bar_small.prm",
+                      {"Mesh/Type=diagonal",
+                       "Mesh/Blocks x=8",
+                       "Basis/Type=" + basis,
+                       "Time/End time=0.005",
+                       "Output/Interval=0",
+                       "Mass matrix/Direct solver size=" +
+                         std::to_string(size)},
+                      "bar-" + basis + "-" + std::to_string(size));
+          double largest = 0;
           for (const double m : s.column("momentum_y"))
             largest = std::max(largest, std::abs(m));
           out << basis << ", direct solver size " << size << std::endl;
           // Powell-Sabin's inner control points are free: its y is solved.
           if (basis == "linear")
             PSMPM_CHECK(out, largest == 0);
-          const auto e                = s.column("displacement_L2");
-          bar_error[size > 0 ? 0 : 1] = e.empty() ? std::nan("") : e.back();
+          bar_error[size > 0 ? 0 : 1] = final_error(s);
         }
       PSMPM_CHECK(out, std::abs(bar_error[0] / bar_error[1] - 1) < 1e-8);
     }
