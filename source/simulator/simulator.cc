@@ -218,6 +218,18 @@ namespace psmpm
       const bool grid_moves         = transfer && transfer->moves_grid();
       if (mass_automatic)
         grid_parameters.type = space->default_mass_matrix(grid_moves);
+      // The sampling stabilisation's cell matrices belong to the initial
+      // cells: not for a grid that moves with the material.
+      if (grid_parameters.sampling_stabilization < 0)
+        grid_parameters.sampling_stabilization =
+          mass_automatic && !grid_moves ? 0.5 : 0.;
+      AssertThrow(!(grid_moves && grid_parameters.sampling_stabilization > 0),
+                  ExcMessage("Mass matrix/Sampling stabilization = " +
+                             prm_value(grid_parameters.sampling_stabilization) +
+                             " with Transfer/Scheme = " + transfer_name +
+                             ": its cell matrices are those of the initial "
+                             "cells, and this transfer moves the grid; use "
+                             "0."));
       if (transfer_automatic)
         {
           transfer_name = space->default_transfer(grid_parameters.type);
@@ -654,6 +666,7 @@ namespace psmpm
       statistics.add_value("condition_number", gs.condition_number);
       statistics.add_value("min_relative_diagonal", gs.min_relative_diagonal);
       statistics.add_value("treated_dofs", gs.n_treated_dofs);
+      statistics.add_value("stabilized_cells", gs.n_stabilized_cells);
       statistics.add_value("mass_diag_ratio",
                            gs.max_diagonal > 0 ?
                              gs.min_diagonal / gs.max_diagonal :
@@ -1200,6 +1213,7 @@ namespace psmpm
       summary.set("time_step_max", time_step_control.get_max_time_step());
       summary.set("basis", state.space->name());
       summary.set("mass_matrix", grid_parameters.type);
+      summary.set("sampling_stabilization", state.grid->sampling_target());
       summary.set("transfer", transfer_name);
       summary.set("reconstruction", reconstruction_name);
       summary.set("material", state.materials.model_names());

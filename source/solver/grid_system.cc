@@ -18,6 +18,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
+#include <cmath>
 
 namespace psmpm
 {
@@ -35,6 +36,31 @@ namespace psmpm
                     const Basis::Space<dim> &space)
       {
         return preconditioner == "block jacobi" && space.dofs_per_vertex() > 1;
+      }
+
+      /// Mass matrix/Sampling stabilization: a number >= 0, or
+      /// "automatic" (-1, resolved by the simulator).
+      double
+      parse_sampling_stabilization(const std::string &value)
+      {
+        if (value == "automatic")
+          return -1;
+        std::size_t end  = 0;
+        double      beta = -1;
+        try
+          {
+            beta = std::stod(value, &end);
+          }
+        catch (...)
+          {
+            end = 0;
+          }
+        AssertThrow(
+          end > 0 && value.find_first_not_of(" \t", end) == std::string::npos &&
+            std::isfinite(beta) && beta >= 0,
+          ExcMessage("Mass matrix/Sampling stabilization = '" + value +
+                     "': must be automatic or a number >= 0."));
+        return beta;
       }
     } // namespace
 
@@ -129,6 +155,22 @@ namespace psmpm
                         "Relative bound M_ii / M_ii(full support) below which "
                         "a function counts as poorly supported ("
                         "extrapolate).");
+      prm.declare_entry(
+        "Sampling stabilization",
+        "automatic",
+        Patterns::Anything(),
+        "Target t of the sampling stabilisation, for every matrix "
+        "strategy: on each cell c whose particles give the cell's "
+        "non-polynomial modes less than t of their exact mass (smallest "
+        "eigenvalue lambda), add rho_c (t - lambda) int_c (u - P u)(v - P v), "
+        "P the L2 projection onto the polynomials of the space's degree on "
+        "c, rho_c the particle mass over |c|. It vanishes for those "
+        "polynomials (momentum, affine and quadratic fields are kept) and "
+        "keeps the matrix definite when a sparse particle layout leaves "
+        "fields that vanish at every particle (doc/stability.md, \"Sparse "
+        "particle layouts\"). Powell-Sabin and quadratic tensor B-splines; "
+        "no effect on P1. A number >= 0 (0: off) or automatic: 0.5 with "
+        "Type = automatic on a grid that does not move, 0 otherwise.");
       prm.declare_entry("Stabilization",
                         "1",
                         Patterns::Double(0),
@@ -147,14 +189,16 @@ namespace psmpm
     GridSystem<dim>::Parameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Mass matrix");
-      type                      = prm.get("Type");
-      threshold                 = prm.get_double("Threshold");
-      tolerance                 = prm.get_double("Solver tolerance");
-      max_iterations            = prm.get_integer("Maximum iterations");
-      direct_size               = prm.get_integer("Direct solver size");
-      warm_start                = prm.get_bool("Warm start");
-      preconditioner            = prm.get("Preconditioner");
-      stabilization             = prm.get_double("Stabilization");
+      type           = prm.get("Type");
+      threshold      = prm.get_double("Threshold");
+      tolerance      = prm.get_double("Solver tolerance");
+      max_iterations = prm.get_integer("Maximum iterations");
+      direct_size    = prm.get_integer("Direct solver size");
+      warm_start     = prm.get_bool("Warm start");
+      preconditioner = prm.get("Preconditioner");
+      stabilization  = prm.get_double("Stabilization");
+      sampling_stabilization =
+        parse_sampling_stabilization(prm.get("Sampling stabilization"));
       multigrid_smoother        = prm.get("Multigrid smoother");
       multigrid_smoothing_steps = prm.get_integer("Multigrid smoothing steps");
       multigrid_coarse          = prm.get("Multigrid coarse matrix");
@@ -176,6 +220,7 @@ namespace psmpm
           MassStrategyRegistry<dim>::instance().create(parameters.type,
                                                        "Mass matrix/Type",
                                                        parameters.threshold))
+      , sampling(parameters.sampling_stabilization)
       , space(space)
       , dof_handler(dof_handler)
       , comm(comm)
@@ -261,6 +306,7 @@ namespace psmpm
           build_sparsity();
           cells.mass.assign(n_cells * dofs_per_cell * dofs_per_cell, 0.);
           compute_full_support_diagonal(density);
+          sampling.reinit(*this);
         }
       else
         cells.mass.clear();
@@ -1032,8 +1078,13 @@ namespace psmpm
       stats.min_relative_diagonal = Utilities::MPI::min(rmin, comm);
 
       patches.clear();
+      stats.n_stabilized_cells =
+        sampling.acts_on(*this) ?
+          Utilities::MPI::sum(sampling.weigh(*this), comm) :
+          0;
       if (mass_strategy->prepare(*this, diagonal))
         build_sparsity();
+      sampling.apply(*this);
       together = components_together();
       // One reduction for all components: this runs every step.
       unsigned int here[dim], everywhere[dim];

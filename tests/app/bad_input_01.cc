@@ -130,6 +130,23 @@ main(int argc, char **argv)
                               "  set Jacobi damping = 0\n end\nend\n",
               {},
               {"Jacobi damping", "case.prm"}},
+             {"negative sampling stabilization",
+              head + "subsection Mass matrix\n"
+                              " set Sampling stabilization = -0.5\nend\n",
+              {},
+              {"Mass matrix/Sampling stabilization", "-0.5", "case.prm"}},
+             {"sampling stabilization not a number",
+              head + "subsection Mass matrix\n"
+                              " set Sampling stabilization = half\nend\n",
+              {},
+              {"Mass matrix/Sampling stabilization", "half", "case.prm"}},
+             {"sampling stabilization on a moving grid",
+              head + "subsection Basis\n set Type = powell-sabin\nend\n"
+                              "subsection Transfer\n set Scheme = otm\nend\n"
+                              "subsection Mass matrix\n"
+                              " set Sampling stabilization = 0.5\nend\n",
+              {},
+              {"Mass matrix/Sampling stabilization", "otm", "case.prm"}},
   };
   for (const auto &c : cases)
     {

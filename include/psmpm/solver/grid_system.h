@@ -22,6 +22,7 @@
 #include <psmpm/solver/ghost_exchange.h>
 #include <psmpm/solver/mass_strategy.h>
 #include <psmpm/solver/p_multigrid.h>
+#include <psmpm/solver/sampling_stabilization.h>
 #include <psmpm/solver/vertex_block_jacobi.h>
 
 #include <array>
@@ -70,6 +71,10 @@ namespace psmpm
         /// Fictitious mass fraction alpha of the stabilised strategies
         /// (Mass matrix/Stabilization).
         double stabilization = 1;
+        /// beta of SamplingStabilization (Mass matrix/Sampling
+        /// stabilization; "automatic" is -1 here until the simulator
+        /// resolves it, 0: off).
+        double sampling_stabilization = -1;
         /// Preconditioner = pmg: smoother of the Powell-Sabin level
         /// ("gauss-seidel": forward sweeps before, backward after the
         /// coarse correction; "jacobi": damped Jacobi) and its sweeps
@@ -94,6 +99,8 @@ namespace psmpm
         unsigned int n_empty_dofs     = 0; ///< DoFs with no particle support
         unsigned int n_treated_dofs =
           0; ///< lumped, deactivated or extrapolated
+        /// cells given the sampling stabilisation (SamplingStabilization)
+        unsigned int n_stabilized_cells = 0;
       };
 
       /// Per owned cell: consistent mass dofs_per_cell^2 (row-major; only
@@ -341,6 +348,14 @@ namespace psmpm
       {
         return space;
       }
+
+      /// The sampling stabilisation's target where it acts on this space
+      /// and strategy, else 0 (summary.json).
+      double
+      sampling_target() const
+      {
+        return sampling.acts_on(*this) ? parameters.sampling_stabilization : 0.;
+      }
       const DoFHandler<dim> &
       get_dof_handler() const
       {
@@ -443,6 +458,7 @@ namespace psmpm
       assemble_multigrid(const unsigned int d);
 
       std::unique_ptr<MassStrategy<dim>>              mass_strategy;
+      SamplingStabilization<dim>                      sampling;
       const Basis::Space<dim>                        &space;
       const DoFHandler<dim>                          &dof_handler;
       MPI_Comm                                        comm;

@@ -8,6 +8,7 @@
 #include <psmpm/solver/grid_system.h>
 #include <psmpm/solver/mass_strategies/cell_fill.h>
 #include <psmpm/solver/mass_strategy.h>
+#include <psmpm/solver/polynomial_complement.h>
 
 #include <cmath>
 #include <set>
@@ -135,26 +136,6 @@ namespace psmpm
           unsigned int     generation = 0;
         };
 
-        /// Monomials of degree <= k in (x - x0) / h.
-        static std::vector<double>
-        monomials(const Point<dim>  &x,
-                  const Point<dim>  &x0,
-                  const double       h,
-                  const unsigned int k)
-        {
-          std::vector<double>  r;
-          const Tensor<1, dim> y = (x - x0) / h;
-          if (dim == 1)
-            for (unsigned int a = 0; a <= k; ++a)
-              r.push_back(std::pow(y[0], a));
-          else
-            for (unsigned int total = 0; total <= k; ++total)
-              for (unsigned int a = 0; a <= total; ++a)
-                r.push_back(std::pow(y[0], total - a) *
-                            std::pow(y[dim - 1], a));
-          return r;
-        }
-
         /// One patch per pair of cells sharing a vertex, one of them owned
         /// (each pair once over all ranks: the rank of the smaller
         /// subdomain).
@@ -167,7 +148,6 @@ namespace psmpm
           const unsigned int                   n     = grid.dofs_per_cell;
           const unsigned int                   k     = space.degree();
           std::vector<types::global_dof_index> dofs(n);
-          std::vector<double>                  values(n);
           std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
             grid.n_cells);
           for (const auto &cell : dh.active_cell_iterators())
@@ -208,47 +188,17 @@ namespace psmpm
                   }
                 for (const auto g : patch)
                   face.dofs.push_back(rel.index_within_set(g));
-                const unsigned int m = patch.size();
                 // Polynomials centred between the cells, scaled by them.
                 const Point<dim> x0 = (cell->center() + other->center()) / 2.;
                 const double h = std::max(cell->diameter(), other->diameter());
-                const unsigned int np = monomials(x0, x0, h, k).size();
-                FullMatrix<double> Mw(m, m), B(np, m), G(np, np);
-                for (unsigned int s = 0; s < 2; ++s)
-                  {
-                    const unsigned int    c = face.cells[s];
-                    const Quadrature<dim> q = space.cell_quadrature(dh, c);
-                    for (unsigned int i = 0; i < q.size(); ++i)
-                      {
-                        space.evaluate(c, q.point(i), values.data(), nullptr);
-                        const auto   p = monomials(q.point(i), x0, h, k);
-                        const double w = q.weight(i);
-                        for (unsigned int a = 0; a < n; ++a)
-                          {
-                            for (unsigned int b = 0; b < n; ++b)
-                              Mw(map[s][a], map[s][b]) +=
-                                w * values[a] * values[b];
-                            for (unsigned int r = 0; r < np; ++r)
-                              B(r, map[s][a]) += w * p[r] * values[a];
-                          }
-                        for (unsigned int r = 0; r < np; ++r)
-                          for (unsigned int t = 0; t < np; ++t)
-                            G(r, t) += w * p[r] * p[t];
-                      }
-                  }
-                // S = Mw - B^T G^-1 B.
-                G.gauss_jordan();
-                FullMatrix<double> GB(np, m);
-                G.mmult(GB, B);
-                face.S = Mw;
-                FullMatrix<double> BtGB(m, m);
-                B.Tmmult(BtGB, GB);
-                face.S.add(-1., BtGB);
-                // Exact symmetry.
-                for (unsigned int a = 0; a < m; ++a)
-                  for (unsigned int b = a + 1; b < m; ++b)
-                    face.S(a, b) = face.S(b, a) =
-                      0.5 * (face.S(a, b) + face.S(b, a));
+                face.S         = polynomial_complement(space,
+                                               dh,
+                                               {face.cells[0], face.cells[1]},
+                                               {map[0], map[1]},
+                                               patch.size(),
+                                               k,
+                                               x0,
+                                               h);
                 faces.push_back(std::move(face));
               }
             }

@@ -1,0 +1,116 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/solver/polynomial_complement.h>
+
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Solver
+  {
+    namespace
+    {
+      /// Monomials of degree <= k in (x - x0) / h.
+      template <int dim>
+      std::vector<double>
+      monomials(const Point<dim>  &x,
+                const Point<dim>  &x0,
+                const double       h,
+                const unsigned int k)
+      {
+        std::vector<double>  r;
+        const Tensor<1, dim> y = (x - x0) / h;
+        if (dim == 1)
+          for (unsigned int a = 0; a <= k; ++a)
+            r.push_back(std::pow(y[0], a));
+        else
+          for (unsigned int total = 0; total <= k; ++total)
+            for (unsigned int a = 0; a <= total; ++a)
+              r.push_back(std::pow(y[0], total - a) * std::pow(y[dim - 1], a));
+        return r;
+      }
+    } // namespace
+
+    template <int dim>
+    unsigned int
+    n_monomials(const unsigned int degree)
+    {
+      return dim == 1 ? degree + 1 : (degree + 1) * (degree + 2) / 2;
+    }
+
+    template <int dim>
+    FullMatrix<double>
+    polynomial_complement(
+      const Basis::Space<dim>                      &space,
+      const DoFHandler<dim>                        &dof_handler,
+      const std::vector<unsigned int>              &cells,
+      const std::vector<std::vector<unsigned int>> &to_patch,
+      const unsigned int                            n_patch,
+      const unsigned int                            degree,
+      const Point<dim>                             &x0,
+      const double                                  h)
+    {
+      const unsigned int  n  = space.dofs_per_cell();
+      const unsigned int  np = n_monomials<dim>(degree);
+      std::vector<double> values(n);
+      FullMatrix<double>  S(n_patch, n_patch), B(np, n_patch), G(np, np);
+      for (unsigned int s = 0; s < cells.size(); ++s)
+        {
+          const unsigned int    c = cells[s];
+          const Quadrature<dim> q = space.cell_quadrature(dof_handler, c);
+          for (unsigned int i = 0; i < q.size(); ++i)
+            {
+              space.evaluate(c, q.point(i), values.data(), nullptr);
+              const auto   p = monomials(q.point(i), x0, h, degree);
+              const double w = q.weight(i);
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  for (unsigned int b = 0; b < n; ++b)
+                    S(to_patch[s][a], to_patch[s][b]) +=
+                      w * values[a] * values[b];
+                  for (unsigned int r = 0; r < np; ++r)
+                    B(r, to_patch[s][a]) += w * p[r] * values[a];
+                }
+              for (unsigned int r = 0; r < np; ++r)
+                for (unsigned int t = 0; t < np; ++t)
+                  G(r, t) += w * p[r] * p[t];
+            }
+        }
+      // S = M - B^T G^-1 B.
+      G.gauss_jordan();
+      FullMatrix<double> GB(np, n_patch), BtGB(n_patch, n_patch);
+      G.mmult(GB, B);
+      B.Tmmult(BtGB, GB);
+      S.add(-1., BtGB);
+      // Exact symmetry.
+      for (unsigned int a = 0; a < n_patch; ++a)
+        for (unsigned int b = a + 1; b < n_patch; ++b)
+          S(a, b) = S(b, a) = 0.5 * (S(a, b) + S(b, a));
+      return S;
+    }
+
+    template unsigned int
+    n_monomials<1>(const unsigned int);
+    template unsigned int
+    n_monomials<2>(const unsigned int);
+    template FullMatrix<double>
+    polynomial_complement(const Basis::Space<1> &,
+                          const DoFHandler<1> &,
+                          const std::vector<unsigned int> &,
+                          const std::vector<std::vector<unsigned int>> &,
+                          const unsigned int,
+                          const unsigned int,
+                          const Point<1> &,
+                          const double);
+    template FullMatrix<double>
+    polynomial_complement(const Basis::Space<2> &,
+                          const DoFHandler<2> &,
+                          const std::vector<unsigned int> &,
+                          const std::vector<std::vector<unsigned int>> &,
+                          const unsigned int,
+                          const unsigned int,
+                          const Point<2> &,
+                          const double);
+  } // namespace Solver
+} // namespace psmpm

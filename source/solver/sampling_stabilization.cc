@@ -1,0 +1,236 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <psmpm/solver/grid_system.h>
+#include <psmpm/solver/polynomial_complement.h>
+#include <psmpm/solver/sampling_stabilization.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Solver
+  {
+    namespace
+    {
+      /// Smallest eigenvalue of the symmetric 3 x 3 matrix with entries
+      /// a00, a11, a22 (diagonal), a01, a02, a12 (closed form, Smith 1961).
+      double
+      smallest_eigenvalue(const double a00,
+                          const double a11,
+                          const double a22,
+                          const double a01,
+                          const double a02,
+                          const double a12)
+      {
+        const double q  = (a00 + a11 + a22) / 3;
+        const double p1 = a01 * a01 + a02 * a02 + a12 * a12;
+        const double p2 = (a00 - q) * (a00 - q) + (a11 - q) * (a11 - q) +
+                          (a22 - q) * (a22 - q) + 2 * p1;
+        if (!(p2 > 0))
+          return q;
+        const double p   = std::sqrt(p2 / 6);
+        const double b00 = (a00 - q) / p, b11 = (a11 - q) / p,
+                     b22 = (a22 - q) / p, b01 = a01 / p, b02 = a02 / p,
+                     b12 = a12 / p;
+        const double r =
+          (b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) +
+           b02 * (b01 * b12 - b11 * b02)) /
+          2;
+        const double phi = std::acos(std::clamp(r, -1., 1.)) / 3;
+        return q + 2 * p * std::cos(phi + 2 * M_PI / 3);
+      }
+    } // namespace
+
+    template <int dim>
+    SamplingStabilization<dim>::SamplingStabilization(const double target)
+      : target(target)
+    {
+    }
+
+    template <int dim>
+    bool
+    SamplingStabilization<dim>::acts_on(const GridSystem<dim> &grid) const
+    {
+      return target > 0 && grid.uses_matrix() &&
+             grid.dofs_per_cell == n_functions &&
+             n_monomials<dim>(grid.get_space().degree()) ==
+               n_functions - n_modes;
+    }
+
+    template <int dim>
+    void
+    SamplingStabilization<dim>::reinit(const GridSystem<dim> &grid)
+    {
+      complement.clear();
+      basis.clear();
+      inverse_measure.clear();
+      weights.clear();
+      if (!acts_on(grid))
+        return;
+      const auto        &space = grid.get_space();
+      const auto        &dh    = grid.get_dof_handler();
+      const unsigned int n     = grid.dofs_per_cell;
+      std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
+        grid.n_cells);
+      for (const auto &cell : dh.active_cell_iterators())
+        cells[cell->active_cell_index()] = cell;
+      std::vector<unsigned int> identity(n);
+      for (unsigned int k = 0; k < n; ++k)
+        identity[k] = k;
+      const auto &owned = grid.owned_cells();
+      complement.resize(owned.size() * n * n);
+      basis.resize(owned.size() * n * n_modes);
+      inverse_measure.resize(owned.size());
+      std::vector<double> values(n);
+      for (unsigned int i = 0; i < owned.size(); ++i)
+        {
+          const unsigned int c    = owned[i];
+          const auto        &cell = cells[c];
+          const auto         S    = polynomial_complement(space,
+                                               dh,
+                                               {c},
+                                               {identity},
+                                               n,
+                                               space.degree(),
+                                               cell->center(),
+                                               cell->diameter());
+          for (unsigned int k = 0; k < n; ++k)
+            for (unsigned int l = 0; l < n; ++l)
+              complement[(i * n + k) * n + l] = S(k, l);
+          inverse_measure[i] = 1. / cell->measure();
+
+          // E = L L^T, the cell's exact mass matrix. E^-1 S is the
+          // projection I - P (eigenvalues 0 on the polynomials, 1 on the
+          // rest): its eigenvectors of eigenvalue 1, E-orthonormal, are
+          // those of L^-1 S L^-T, mapped by L^-T.
+          FullMatrix<double>    E(n, n);
+          const Quadrature<dim> q = space.cell_quadrature(dh, c);
+          for (unsigned int j = 0; j < q.size(); ++j)
+            {
+              space.evaluate(c, q.point(j), values.data(), nullptr);
+              for (unsigned int k = 0; k < n; ++k)
+                for (unsigned int l = 0; l < n; ++l)
+                  E(k, l) += q.weight(j) * values[k] * values[l];
+            }
+          FullMatrix<double> L(n, n), Linv(n, n), T(n, n), C(n, n);
+          L.cholesky(E);
+          Linv.invert(L);
+          Linv.mmult(T, S);
+          T.mTmult(C, Linv);
+          LAPACKFullMatrix<double> lapack(n, n);
+          for (unsigned int k = 0; k < n; ++k)
+            for (unsigned int l = 0; l < n; ++l)
+              lapack(k, l) = 0.5 * (C(k, l) + C(l, k));
+          Vector<double>     eigenvalues;
+          FullMatrix<double> Y;
+          lapack.compute_eigenvalues_symmetric(0.5, 1.5, 1e-12, eigenvalues, Y);
+          AssertThrow(eigenvalues.size() == n_modes,
+                      ExcMessage("Sampling stabilization: cell " +
+                                 std::to_string(c) + " has " +
+                                 std::to_string(eigenvalues.size()) +
+                                 " non-polynomial modes, expected " +
+                                 std::to_string(n_modes) + "."));
+          for (unsigned int k = 0; k < n; ++k)
+            for (unsigned int r = 0; r < n_modes; ++r)
+              {
+                double v = 0;
+                for (unsigned int l = 0; l < n; ++l)
+                  v += Linv(l, k) * Y(l, r);
+                basis[(i * n + k) * n_modes + r] = v;
+              }
+        }
+    }
+
+    template <int dim>
+    unsigned int
+    SamplingStabilization<dim>::weigh(const GridSystem<dim> &grid)
+    {
+      weights.clear();
+      if (basis.empty() || !acts_on(grid))
+        return 0;
+      unsigned int n_weighted = 0;
+      const auto  &owned      = grid.owned_cells();
+      const auto  &lumped     = grid.cell_arrays().lumped;
+      const auto  &mass       = grid.cell_arrays().mass;
+      weights.assign(owned.size(), 0.);
+      // n_functions at compile time lets the compiler unroll the
+      // products (this runs every step on every cell).
+      constexpr unsigned int n = n_functions;
+      {
+        for (unsigned int i = 0; i < owned.size(); ++i)
+          {
+            const unsigned int c = owned[i];
+            // The functions of a cell sum to one: its lumped rows add up
+            // to its particle mass.
+            double m = 0;
+            for (unsigned int k = 0; k < n; ++k)
+              m += lumped[c * n + k];
+            if (!(m > 0))
+              continue;
+            // A = Q^T M_c Q / rho: the particles' mass of the
+            // non-polynomial modes relative to the exact one (the
+            // identity where they integrate like the exact integral).
+            const double *M = &mass[c * n * n];
+            const double *Q = &basis[i * n * n_modes];
+            double        MQ[n * n_modes];
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                double v[n_modes] = {};
+                for (unsigned int l = 0; l < n; ++l)
+                  for (unsigned int r = 0; r < n_modes; ++r)
+                    v[r] += M[k * n + l] * Q[l * n_modes + r];
+                for (unsigned int r = 0; r < n_modes; ++r)
+                  MQ[k * n_modes + r] = v[r];
+              }
+            double A[n_modes][n_modes] = {};
+            for (unsigned int k = 0; k < n; ++k)
+              for (unsigned int r = 0; r < n_modes; ++r)
+                for (unsigned int s = r; s < n_modes; ++s)
+                  A[r][s] += Q[k * n_modes + r] * MQ[k * n_modes + s];
+            const double rho    = m * inverse_measure[i];
+            const double lambda = smallest_eigenvalue(A[0][0],
+                                                      A[1][1],
+                                                      A[2][2],
+                                                      A[0][1],
+                                                      A[0][2],
+                                                      A[1][2]) /
+                                  rho;
+            // Lift the smallest to the target (Q^T S_c Q = I).
+            if (lambda < target)
+              {
+                weights[i] = rho * (target - lambda);
+                ++n_weighted;
+              }
+          }
+      }
+      return n_weighted;
+    }
+
+    template <int dim>
+    void
+    SamplingStabilization<dim>::apply(GridSystem<dim> &grid) const
+    {
+      if (weights.empty())
+        return;
+      const unsigned int n     = grid.dofs_per_cell;
+      const auto        &owned = grid.owned_cells();
+      auto              &mass  = grid.cell_arrays().mass;
+      for (unsigned int i = 0; i < owned.size(); ++i)
+        if (weights[i] > 0)
+          {
+            const double  w = weights[i];
+            const double *S = &complement[i * n * n];
+            double       *M = &mass[owned[i] * n * n];
+            for (unsigned int kl = 0; kl < n * n; ++kl)
+              M[kl] += w * S[kl];
+          }
+    }
+
+    template class SamplingStabilization<1>;
+    template class SamplingStabilization<2>;
+  } // namespace Solver
+} // namespace psmpm
