@@ -31,6 +31,7 @@
 #include <psmpm/solver/grid_system.h>
 
 #include "../tests.h"
+#include "particle_mass.h"
 
 #include <algorithm>
 #include <functional>
@@ -40,12 +41,7 @@ namespace
   using namespace psmpm;
   const double rho = 1000;
 
-  struct Particle
-  {
-    unsigned int cell;
-    Point<2>     x;
-    double       m;
-  };
+  using particle_mass::Particle;
 
   /// Assembled matrix (component 0) of strategy @p type as a dense
   /// matrix; @p free_active: untied DoFs with particle mass.
@@ -59,48 +55,17 @@ namespace
     Solver::GridSystem<2>::Parameters p;
     p.type          = type;
     p.stabilization = 1;
-    Solver::GridSystem<2> grid(p, space, dh, MPI_COMM_WORLD);
-    grid.reinit({}, rho);
-    grid.zero_cell_mass();
-    grid.zero_cell_rhs();
-    const unsigned int  n     = grid.dofs_per_cell;
-    auto               &cells = grid.cell_arrays();
-    std::vector<double> phi(n);
-    for (const auto &q : particles)
-      {
-        space.evaluate(q.cell, q.x, phi.data(), nullptr);
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            cells.lumped[q.cell * n + k] += q.m * phi[k];
-            for (unsigned int l = 0; l < n; ++l)
-              cells.mass[(q.cell * n + k) * n + l] += q.m * phi[k] * phi[l];
-          }
-      }
-    grid.assemble_mass();
-    const auto        &M = grid.mass_matrix(0);
+    const auto grid = particle_mass::assemble(p, space, dh, particles, rho);
     const unsigned int N = dh.n_dofs();
-    FullMatrix<double> A(N, N);
-    for (unsigned int i = 0; i < N; ++i)
-      for (unsigned int j = 0; j < N; ++j)
-        A(i, j) = M.el(i, j);
     free_active.assign(N, false);
     for (unsigned int i = 0; i < N; ++i)
       free_active[i] =
-        !grid.constraints(0).is_constrained(i) &&
-        grid.lumped_mass()[grid.relevant_dofs().index_within_set(i)] > 0;
-    return A;
+        !grid->constraints(0).is_constrained(i) &&
+        grid->lumped_mass()[grid->relevant_dofs().index_within_set(i)] > 0;
+    return particle_mass::dense(*grid, N);
   }
 
-  double
-  asymmetry(const FullMatrix<double> &A)
-  {
-    double a = 0, s = 0;
-    for (unsigned int i = 0; i < A.m(); ++i)
-      for (unsigned int j = 0; j < A.n(); ++j)
-        a = std::max(a, std::abs(A(i, j) - A(j, i))),
-        s = std::max(s, std::abs(A(i, j)));
-    return a / s;
-  }
+  using particle_mass::asymmetry;
 
   /// {lambda_min / lambda_max, condition number} of D^-1/2 A D^-1/2 on
   /// the DoFs @p use (what Jacobi-preconditioned CG sees).

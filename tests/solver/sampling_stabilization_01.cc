@@ -34,6 +34,7 @@
 #include <psmpm/solver/grid_system.h>
 
 #include "../mpm_tests.h"
+#include "particle_mass.h"
 
 #include <filesystem>
 #include <functional>
@@ -43,12 +44,7 @@ namespace
   using namespace psmpm;
   const double rho = 1000;
 
-  struct Particle
-  {
-    unsigned int cell;
-    Point<2>     x;
-    double       m;
-  };
+  using particle_mass::Particle;
 
   /// Particles at the given barycentric points of every cell, the cell's
   /// mass rho |c| shared equally: every cell is filled.
@@ -91,43 +87,12 @@ namespace
     Solver::GridSystem<2>::Parameters p;
     p.type                   = "consistent";
     p.sampling_stabilization = target;
-    Solver::GridSystem<2> grid(p, space, dh, MPI_COMM_WORLD);
-    grid.reinit({}, rho);
-    grid.zero_cell_mass();
-    grid.zero_cell_rhs();
-    const unsigned int  n     = grid.dofs_per_cell;
-    auto               &cells = grid.cell_arrays();
-    std::vector<double> phi(n);
-    for (const auto &q : particles)
-      {
-        space.evaluate(q.cell, q.x, phi.data(), nullptr);
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            cells.lumped[q.cell * n + k] += q.m * phi[k];
-            for (unsigned int l = 0; l < n; ++l)
-              cells.mass[(q.cell * n + k) * n + l] += q.m * phi[k] * phi[l];
-          }
-      }
-    grid.assemble_mass();
-    const auto        &M = grid.mass_matrix(0);
-    const unsigned int N = dh.n_dofs();
-    FullMatrix<double> A(N, N);
-    for (unsigned int i = 0; i < N; ++i)
-      for (unsigned int j = 0; j < N; ++j)
-        A(i, j) = M.el(i, j);
-    return A;
+    return particle_mass::dense(
+      *particle_mass::assemble(p, space, dh, particles, rho),
+      dh.n_dofs());
   }
 
-  double
-  asymmetry(const FullMatrix<double> &A)
-  {
-    double a = 0, s = 0;
-    for (unsigned int i = 0; i < A.m(); ++i)
-      for (unsigned int j = 0; j < A.n(); ++j)
-        a = std::max(a, std::abs(A(i, j) - A(j, i))),
-        s = std::max(s, std::abs(A(i, j)));
-    return a / s;
-  }
+  using particle_mass::asymmetry;
 
   /// Condition number of D^-1/2 A D^-1/2 (what Jacobi-CG sees); 1e300 if
   /// it is not positive definite.
@@ -146,6 +111,30 @@ namespace
     return lmin > 0 ? lmax / lmin : 1e300;
   }
 
+  /// Calls @p f(dofs, quadrature point, weight, values) at every
+  /// quadrature point of every cell.
+  template <typename F>
+  void
+  for_each_point(const Basis::Space<2> &space,
+                 const DoFHandler<2>   &dh,
+                 const F               &f)
+  {
+    const unsigned int                   n = space.dofs_per_cell();
+    std::vector<double>                  phi(n);
+    std::vector<types::global_dof_index> dofs(n);
+    for (const auto &cell : dh.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        const unsigned int c = cell->active_cell_index();
+        const auto         q = space.cell_quadrature(dh, c);
+        for (unsigned int j = 0; j < q.size(); ++j)
+          {
+            space.evaluate(c, q.point(j), phi.data(), nullptr);
+            f(dofs, q.point(j), q.weight(j), phi);
+          }
+      }
+  }
+
   /// The space's coefficients of the polynomial @p f: the L2 projection
   /// with the exact mass matrix (exact, the space reproduces quadratics);
   /// @p error: the largest deviation at the quadrature points.
@@ -155,48 +144,32 @@ namespace
                const std::function<double(const Point<2> &)> &f,
                double                                        &error)
   {
-    const unsigned int  N = dh.n_dofs(), n = space.dofs_per_cell();
-    FullMatrix<double>  E(N, N);
-    Vector<double>      b(N), c(N);
-    std::vector<double> phi(n);
-    std::vector<types::global_dof_index> dofs(n);
-    for (const auto &cell : dh.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        const auto q = space.cell_quadrature(dh, cell->active_cell_index());
-        for (unsigned int j = 0; j < q.size(); ++j)
+    const unsigned int N = dh.n_dofs();
+    FullMatrix<double> E(N, N);
+    Vector<double>     b(N), c(N);
+    for_each_point(
+      space,
+      dh,
+      [&](const auto &dofs, const auto &x, const double w, const auto &phi) {
+        for (unsigned int k = 0; k < phi.size(); ++k)
           {
-            space.evaluate(cell->active_cell_index(),
-                           q.point(j),
-                           phi.data(),
-                           nullptr);
-            for (unsigned int k = 0; k < n; ++k)
-              {
-                b(dofs[k]) += q.weight(j) * phi[k] * f(q.point(j));
-                for (unsigned int l = 0; l < n; ++l)
-                  E(dofs[k], dofs[l]) += q.weight(j) * phi[k] * phi[l];
-              }
+            b(dofs[k]) += w * phi[k] * f(x);
+            for (unsigned int l = 0; l < phi.size(); ++l)
+              E(dofs[k], dofs[l]) += w * phi[k] * phi[l];
           }
-      }
+      });
     E.gauss_jordan();
     E.vmult(c, b);
     error = 0;
-    for (const auto &cell : dh.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        const auto q = space.cell_quadrature(dh, cell->active_cell_index());
-        for (unsigned int j = 0; j < q.size(); ++j)
-          {
-            space.evaluate(cell->active_cell_index(),
-                           q.point(j),
-                           phi.data(),
-                           nullptr);
-            double v = 0;
-            for (unsigned int k = 0; k < n; ++k)
-              v += c(dofs[k]) * phi[k];
-            error = std::max(error, std::abs(v - f(q.point(j))));
-          }
-      }
+    for_each_point(
+      space,
+      dh,
+      [&](const auto &dofs, const auto &x, const double, const auto &phi) {
+        double v = 0;
+        for (unsigned int k = 0; k < phi.size(); ++k)
+          v += c(dofs[k]) * phi[k];
+        error = std::max(error, std::abs(v - f(x)));
+      });
     return c;
   }
 
