@@ -49,7 +49,8 @@ namespace psmpm
       const unsigned int                            n_patch,
       const unsigned int                            degree,
       const Point<dim>                             &x0,
-      const double                                  h)
+      const double                                  h,
+      FullMatrix<double>                           *mass)
     {
       const unsigned int  n  = space.dofs_per_cell();
       const unsigned int  np = n_monomials<dim>(degree);
@@ -77,6 +78,8 @@ namespace psmpm
                   G(r, t) += w * p[r] * p[t];
             }
         }
+      if (mass != nullptr)
+        *mass = S;
       // S = M - B^T G^-1 B.
       G.gauss_jordan();
       FullMatrix<double> GB(np, n_patch), BtGB(n_patch, n_patch);
@@ -102,7 +105,8 @@ namespace psmpm
                           const unsigned int,
                           const unsigned int,
                           const Point<1> &,
-                          const double);
+                          const double,
+                          FullMatrix<double> *);
     template FullMatrix<double>
     polynomial_complement(const Basis::Space<2> &,
                           const DoFHandler<2> &,
@@ -111,6 +115,7 @@ namespace psmpm
                           const unsigned int,
                           const unsigned int,
                           const Point<2> &,
-                          const double);
+                          const double,
+                          FullMatrix<double> *);
   } // namespace Solver
 } // namespace psmpm

@@ -43,6 +43,50 @@ namespace psmpm
         const double phi = std::acos(std::clamp(r, -1., 1.)) / 3;
         return q + 2 * p * std::cos(phi + 2 * M_PI / 3);
       }
+
+      /// The eigenvectors of E^-1 S of eigenvalue 1, E-orthonormal, as the
+      /// columns of an n x n_modes matrix. E is the cell's exact mass
+      /// matrix and S its polynomial complement, so E^-1 S is the
+      /// projection I - P (eigenvalue 0 on the polynomials, 1 on the
+      /// rest): with E = L L^T they are those of L^-1 S L^-T, mapped by
+      /// L^-T.
+      FullMatrix<double>
+      non_polynomial_modes(const FullMatrix<double> &E,
+                           const FullMatrix<double> &S,
+                           const unsigned int        n_modes,
+                           const unsigned int        cell)
+      {
+        const unsigned int n = E.m();
+        FullMatrix<double> L(n, n), Linv(n, n), T(n, n), C(n, n);
+        L.cholesky(E);
+        Linv.invert(L);
+        Linv.mmult(T, S);
+        T.mTmult(C, Linv);
+        LAPACKFullMatrix<double> lapack(n, n);
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int l = 0; l < n; ++l)
+            lapack(k, l) = 0.5 * (C(k, l) + C(l, k));
+        Vector<double>     eigenvalues;
+        FullMatrix<double> Y;
+        lapack.compute_eigenvalues_symmetric(0.5, 1.5, 1e-12, eigenvalues, Y);
+        AssertThrow(eigenvalues.size() == n_modes,
+                    ExcMessage("Sampling stabilization: cell " +
+                               std::to_string(cell) + " has " +
+                               std::to_string(eigenvalues.size()) +
+                               " non-polynomial modes, expected " +
+                               std::to_string(n_modes) + "."));
+        // Q = L^-T Y.
+        FullMatrix<double> Q(n, n_modes);
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int r = 0; r < n_modes; ++r)
+            {
+              double v = 0;
+              for (unsigned int l = 0; l < n; ++l)
+                v += Linv(l, k) * Y(l, r);
+              Q(k, r) = v;
+            }
+        return Q;
+      }
     } // namespace
 
     template <int dim>
@@ -85,63 +129,28 @@ namespace psmpm
       complement.resize(owned.size() * n * n);
       basis.resize(owned.size() * n * n_modes);
       inverse_measure.resize(owned.size());
-      std::vector<double> values(n);
       for (unsigned int i = 0; i < owned.size(); ++i)
         {
           const unsigned int c    = owned[i];
           const auto        &cell = cells[c];
-          const auto         S    = polynomial_complement(space,
+          FullMatrix<double> E;
+          const auto         S = polynomial_complement(space,
                                                dh,
                                                {c},
                                                {identity},
                                                n,
                                                space.degree(),
                                                cell->center(),
-                                               cell->diameter());
+                                               cell->diameter(),
+                                               &E);
           for (unsigned int k = 0; k < n; ++k)
             for (unsigned int l = 0; l < n; ++l)
               complement[(i * n + k) * n + l] = S(k, l);
-          inverse_measure[i] = 1. / cell->measure();
-
-          // E = L L^T, the cell's exact mass matrix. E^-1 S is the
-          // projection I - P (eigenvalues 0 on the polynomials, 1 on the
-          // rest): its eigenvectors of eigenvalue 1, E-orthonormal, are
-          // those of L^-1 S L^-T, mapped by L^-T.
-          FullMatrix<double>    E(n, n);
-          const Quadrature<dim> q = space.cell_quadrature(dh, c);
-          for (unsigned int j = 0; j < q.size(); ++j)
-            {
-              space.evaluate(c, q.point(j), values.data(), nullptr);
-              for (unsigned int k = 0; k < n; ++k)
-                for (unsigned int l = 0; l < n; ++l)
-                  E(k, l) += q.weight(j) * values[k] * values[l];
-            }
-          FullMatrix<double> L(n, n), Linv(n, n), T(n, n), C(n, n);
-          L.cholesky(E);
-          Linv.invert(L);
-          Linv.mmult(T, S);
-          T.mTmult(C, Linv);
-          LAPACKFullMatrix<double> lapack(n, n);
-          for (unsigned int k = 0; k < n; ++k)
-            for (unsigned int l = 0; l < n; ++l)
-              lapack(k, l) = 0.5 * (C(k, l) + C(l, k));
-          Vector<double>     eigenvalues;
-          FullMatrix<double> Y;
-          lapack.compute_eigenvalues_symmetric(0.5, 1.5, 1e-12, eigenvalues, Y);
-          AssertThrow(eigenvalues.size() == n_modes,
-                      ExcMessage("Sampling stabilization: cell " +
-                                 std::to_string(c) + " has " +
-                                 std::to_string(eigenvalues.size()) +
-                                 " non-polynomial modes, expected " +
-                                 std::to_string(n_modes) + "."));
+          inverse_measure[i]         = 1. / cell->measure();
+          const FullMatrix<double> Q = non_polynomial_modes(E, S, n_modes, c);
           for (unsigned int k = 0; k < n; ++k)
             for (unsigned int r = 0; r < n_modes; ++r)
-              {
-                double v = 0;
-                for (unsigned int l = 0; l < n; ++l)
-                  v += Linv(l, k) * Y(l, r);
-                basis[(i * n + k) * n_modes + r] = v;
-              }
+              basis[(i * n + k) * n_modes + r] = Q(k, r);
         }
     }
 
@@ -150,7 +159,9 @@ namespace psmpm
     SamplingStabilization<dim>::weigh(const GridSystem<dim> &grid)
     {
       weights.clear();
-      if (basis.empty() || !acts_on(grid))
+      // basis is empty unless acts_on() held at reinit() (or this rank
+      // owns no cell).
+      if (basis.empty())
         return 0;
       unsigned int n_weighted = 0;
       const auto  &owned      = grid.owned_cells();
@@ -160,53 +171,51 @@ namespace psmpm
       // n_functions at compile time lets the compiler unroll the
       // products (this runs every step on every cell).
       constexpr unsigned int n = n_functions;
-      {
-        for (unsigned int i = 0; i < owned.size(); ++i)
-          {
-            const unsigned int c = owned[i];
-            // The functions of a cell sum to one: its lumped rows add up
-            // to its particle mass.
-            double m = 0;
-            for (unsigned int k = 0; k < n; ++k)
-              m += lumped[c * n + k];
-            if (!(m > 0))
-              continue;
-            // A = Q^T M_c Q / rho: the particles' mass of the
-            // non-polynomial modes relative to the exact one (the
-            // identity where they integrate like the exact integral).
-            const double *M = &mass[c * n * n];
-            const double *Q = &basis[i * n * n_modes];
-            double        MQ[n * n_modes];
-            for (unsigned int k = 0; k < n; ++k)
-              {
-                double v[n_modes] = {};
-                for (unsigned int l = 0; l < n; ++l)
-                  for (unsigned int r = 0; r < n_modes; ++r)
-                    v[r] += M[k * n + l] * Q[l * n_modes + r];
+      for (unsigned int i = 0; i < owned.size(); ++i)
+        {
+          const unsigned int c = owned[i];
+          // The functions of a cell sum to one: its lumped rows add up
+          // to its particle mass.
+          double m = 0;
+          for (unsigned int k = 0; k < n; ++k)
+            m += lumped[c * n + k];
+          if (!(m > 0))
+            continue;
+          // A = Q^T M_c Q / rho: the particles' mass of the
+          // non-polynomial modes relative to the exact one (the
+          // identity where they integrate like the exact integral).
+          const double *M = &mass[c * n * n];
+          const double *Q = &basis[i * n * n_modes];
+          double        MQ[n * n_modes];
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              double v[n_modes] = {};
+              for (unsigned int l = 0; l < n; ++l)
                 for (unsigned int r = 0; r < n_modes; ++r)
-                  MQ[k * n_modes + r] = v[r];
-              }
-            double A[n_modes][n_modes] = {};
-            for (unsigned int k = 0; k < n; ++k)
+                  v[r] += M[k * n + l] * Q[l * n_modes + r];
               for (unsigned int r = 0; r < n_modes; ++r)
-                for (unsigned int s = r; s < n_modes; ++s)
-                  A[r][s] += Q[k * n_modes + r] * MQ[k * n_modes + s];
-            const double rho    = m * inverse_measure[i];
-            const double lambda = smallest_eigenvalue(A[0][0],
-                                                      A[1][1],
-                                                      A[2][2],
-                                                      A[0][1],
-                                                      A[0][2],
-                                                      A[1][2]) /
-                                  rho;
-            // Lift the smallest to the target (Q^T S_c Q = I).
-            if (lambda < target)
-              {
-                weights[i] = rho * (target - lambda);
-                ++n_weighted;
-              }
-          }
-      }
+                MQ[k * n_modes + r] = v[r];
+            }
+          double A[n_modes][n_modes] = {};
+          for (unsigned int k = 0; k < n; ++k)
+            for (unsigned int r = 0; r < n_modes; ++r)
+              for (unsigned int s = r; s < n_modes; ++s)
+                A[r][s] += Q[k * n_modes + r] * MQ[k * n_modes + s];
+          const double rho    = m * inverse_measure[i];
+          const double lambda = smallest_eigenvalue(A[0][0],
+                                                    A[1][1],
+                                                    A[2][2],
+                                                    A[0][1],
+                                                    A[0][2],
+                                                    A[1][2]) /
+                                rho;
+          // Lift the smallest to the target (Q^T S_c Q = I).
+          if (lambda < target)
+            {
+              weights[i] = rho * (target - lambda);
+              ++n_weighted;
+            }
+        }
       return n_weighted;
     }
 

@@ -32,7 +32,8 @@ namespace psmpm
      * quadrature: with the space's partition of unity its row sums are
      * exactly zero. Mesh data only; the mass strategies weight it per step
      * (ghost penalty on pairs of cells, the sampling stabilisation on
-     * single cells).
+     * single cells). If @p mass is given, it receives M (computed on the
+     * way).
      */
     template <int dim>
     FullMatrix<double>
@@ -44,7 +45,8 @@ namespace psmpm
       const unsigned int                            n_patch,
       const unsigned int                            degree,
       const Point<dim>                             &x0,
-      const double                                  h);
+      const double                                  h,
+      FullMatrix<double>                           *mass = nullptr);
 
     /// Number of monomials of degree at most @p degree in dim variables.
     template <int dim>
