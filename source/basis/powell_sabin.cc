@@ -11,10 +11,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <type_traits>
 
 namespace psmpm
 {
@@ -372,9 +374,22 @@ namespace psmpm
     }
 
     void
+    PowellSabin::not_held(const unsigned int cell) const
+    {
+      AssertThrow(false,
+                  ExcMessage("Powell-Sabin: evaluation on cell " +
+                             std::to_string(cell) +
+                             ", which this rank does not hold (only its own "
+                             "cells and their vertex neighbours)."));
+      std::abort();
+    }
+
+    void
     PowellSabin::build_cell_data(const Triangulation<2> &tria)
     {
-      cell_data.resize(tria.n_active_cells());
+      held.reinit(tria);
+      cell_data.clear();
+      cell_data.resize(held.size());
       cell_vertices.resize(tria.n_active_cells());
       for (const auto &cell : tria.active_cell_iterators())
         for (unsigned int k = 0; k < 3; ++k)
@@ -383,8 +398,10 @@ namespace psmpm
       for (const auto &cell : tria.active_cell_iterators())
         {
           const unsigned int index = cell->active_cell_index();
-          const auto        &c     = ps_refinement.cell(index);
-          CellData          &d     = cell_data[index];
+          if (held.slot(index) == Mesh::HeldCells::invalid)
+            continue;
+          const auto &c = ps_refinement.cell(index);
+          CellData   &d = cell_data[held.slot(index)];
 
           // Affine maps relative to the cell's first vertex keep their
           // constants of order one whatever the cell's position.
@@ -638,8 +655,7 @@ namespace psmpm
                           double            *values,
                           Tensor<1, 2>      *gradients) const
     {
-      AssertIndexRange(cell, cell_data.size());
-      const CellData &d = cell_data[cell];
+      const CellData &d = data(cell);
       const double    x = p[0] - d.origin[0], y = p[1] - d.origin[1];
       evaluate_on(d.sub[find_sub_triangle(d, x, y)], x, y, values, gradients);
     }
@@ -662,38 +678,66 @@ namespace psmpm
       // On the throughput bar this halved the time per point
       // (doc/performance.md, stop 28).
       constexpr unsigned int a = 8;
-      unsigned int           ring[a];
-      const auto request = [](const void *begin, const std::size_t size) {
-        const char *p = static_cast<const char *>(begin);
-        for (std::size_t b = 0; b < size; b += 64)
-          __builtin_prefetch(p + b);
-        __builtin_prefetch(p + size - 1);
+      // One rank holds every cell at its own index: the loop reads
+      // cell_data[cell] as before the held cells existed. Several ranks
+      // hold some (Mesh::HeldCells): a point's data are looked up through
+      // the table and checked once, when its sub-triangle is found.
+      const auto run = [&](const auto all_held) {
+        const auto at = [&](const unsigned int cell) -> const CellData & {
+          if constexpr (all_held)
+            {
+              AssertIndexRange(cell, cell_data.size());
+              return cell_data[cell];
+            }
+          else
+            return data(cell);
+        };
+        // The slot of a cell that find() has checked.
+        const auto slot = [&](const unsigned int cell) {
+          return all_held ? cell : held.slot(cell);
+        };
+        unsigned int ring[a];
+        const auto   request = [](const void *begin, const std::size_t size) {
+          const char *p = static_cast<const char *>(begin);
+          for (std::size_t b = 0; b < size; b += 64)
+            __builtin_prefetch(p + b);
+          __builtin_prefetch(p + size - 1);
+        };
+        const auto find = [&](const unsigned int j) {
+          const CellData    &d = at(cells[j]);
+          const unsigned int s = find_sub_triangle(d,
+                                                   points[j][0] - d.origin[0],
+                                                   points[j][1] - d.origin[1]);
+          request(&d.sub[s], sizeof(d.sub[s]));
+          return s;
+        };
+        for (unsigned int j = 0; j < std::min(n, a); ++j)
+          ring[j] = find(j);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            if (i + 2 * a < n)
+              {
+                // A hint only (a prefetch does not fault); find() checks
+                // the cell before its data are read.
+                const unsigned int ahead = slot(cells[i + 2 * a]);
+                if (all_held || ahead < cell_data.size())
+                  request(&cell_data[ahead], offsetof(CellData, sub));
+              }
+            const unsigned int s = ring[i % a];
+            if (i + a < n)
+              ring[i % a] = find(i + a);
+            const CellData &d = cell_data[slot(cells[i])];
+            evaluate_on(d.sub[s],
+                        points[i][0] - d.origin[0],
+                        points[i][1] - d.origin[1],
+                        values + 9 * i,
+                        gradients != nullptr ? gradients + 9 * i : nullptr);
+          }
       };
-      const auto find = [&](const unsigned int j) {
-        AssertIndexRange(cells[j], cell_data.size());
-        const CellData    &d = cell_data[cells[j]];
-        const unsigned int s = find_sub_triangle(d,
-                                                 points[j][0] - d.origin[0],
-                                                 points[j][1] - d.origin[1]);
-        request(&d.sub[s], sizeof(d.sub[s]));
-        return s;
-      };
-      for (unsigned int j = 0; j < std::min(n, a); ++j)
-        ring[j] = find(j);
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          if (i + 2 * a < n)
-            request(&cell_data[cells[i + 2 * a]], offsetof(CellData, sub));
-          const unsigned int s = ring[i % a];
-          if (i + a < n)
-            ring[i % a] = find(i + a);
-          const CellData &d = cell_data[cells[i]];
-          evaluate_on(d.sub[s],
-                      points[i][0] - d.origin[0],
-                      points[i][1] - d.origin[1],
-                      values + 9 * i,
-                      gradients != nullptr ? gradients + 9 * i : nullptr);
-        }
+      if (held.holds_all())
+        run(std::true_type());
+      else
+        run(std::false_type());
     }
 
     void

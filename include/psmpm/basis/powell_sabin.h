@@ -8,6 +8,7 @@
 
 #include <psmpm/basis/powell_sabin_refinement.h>
 #include <psmpm/basis/space.h>
+#include <psmpm/mesh/held_cells.h>
 
 #include <array>
 #include <vector>
@@ -245,7 +246,23 @@ namespace psmpm
           double c[6][9];
         } sub[6];
       };
+      /// Per held cell (Mesh::HeldCells: on several ranks, the rank's
+      /// cells and their vertex neighbours only).
       std::vector<CellData> cell_data;
+      Mesh::HeldCells       held;
+
+      /// The data of active cell @p cell; a cell this rank does not hold
+      /// is an internal error, reported rather than read out of bounds.
+      const CellData &
+      data(const unsigned int cell) const
+      {
+        const unsigned int s = held.slot(cell);
+        if (s >= cell_data.size())
+          not_held(cell);
+        return cell_data[s];
+      }
+      [[noreturn]] void
+      not_held(const unsigned int cell) const;
       /// Vertex indices per cell, for the ordinates' triplets.
       std::vector<std::array<unsigned int, 3>> cell_vertices;
 

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/quadrature_lib.h>
 
+#include <psmpm/mesh/held_cells.h>
 #include <psmpm/simulator/point_accumulation.h>
 #include <psmpm/simulator/reconstruction.h>
 
@@ -265,8 +266,17 @@ namespace psmpm
 
         /// Rule per owned cell: n_q points (the same number on every
         /// cell), their weights, the Taylor functions (n_q x n_max) and
-        /// the space's values and gradients (n_q x dofs_per_cell).
-        unsigned int                n_q = 0, n_dofs = 0;
+        /// the space's values and gradients (n_q x dofs_per_cell), stored
+        /// for this rank's cells only (several kB per cell, the largest
+        /// per-cell data of a run that uses them).
+        unsigned int    n_q = 0, n_dofs = 0;
+        Mesh::HeldCells owned;
+        /// Index of point @p q of owned cell @p c in the arrays below.
+        unsigned int
+        point(const unsigned int c, const unsigned int q) const
+        {
+          return owned.slot(c) * n_q + q;
+        }
         std::vector<double>         weights;
         std::vector<double>         q_psi;
         std::vector<double>         q_values;
@@ -339,6 +349,8 @@ namespace psmpm
             neighbor_start.push_back(neighbors.size());
           }
 
+        owned.reinit(tria, false);
+        n_q = 0;
         Quadrature<dim>           rule;
         std::vector<unsigned int> cells;
         for (const auto &cell : tria.active_cell_iterators())
@@ -378,11 +390,12 @@ namespace psmpm
             to_reference[c] = invert(jacobian);
             if (n_q == 0)
               {
-                n_q = rule.size();
-                weights.assign(n_cells * n_q, 0.);
-                q_psi.assign(n_cells * n_q * n_max, 0.);
-                q_values.assign(n_cells * n_q * n_dofs, 0.);
-                q_gradients.assign(n_cells * n_q * n_dofs, Tensor<1, dim>());
+                n_q                  = rule.size();
+                const unsigned int m = owned.size();
+                weights.assign(m * n_q, 0.);
+                q_psi.assign(m * n_q * n_max, 0.);
+                q_values.assign(m * n_q * n_dofs, 0.);
+                q_gradients.assign(m * n_q * n_dofs, Tensor<1, dim>());
               }
             AssertThrow(rule.size() == n_q,
                         ExcMessage("TaylorLeastSquares: the cell rules of the "
@@ -391,12 +404,12 @@ namespace psmpm
             state.space->evaluate(n_q,
                                   cells.data(),
                                   rule.get_points().data(),
-                                  &q_values[c * n_q * n_dofs],
-                                  &q_gradients[c * n_q * n_dofs]);
+                                  &q_values[point(c, 0) * n_dofs],
+                                  &q_gradients[point(c, 0) * n_dofs]);
             for (unsigned int q = 0; q < n_q; ++q)
               {
-                weights[c * n_q + q] = rule.weight(q);
-                taylor_basis(c, rule.point(q), &q_psi[(c * n_q + q) * n_max]);
+                weights[point(c, q)] = rule.weight(q);
+                taylor_basis(c, rule.point(q), &q_psi[point(c, q) * n_max]);
               }
           }
         offsets.resize(n_cells + 1);
@@ -669,7 +682,7 @@ namespace psmpm
             solve_full(fit, sigma);
             for (unsigned int q = 0; q < n_q; ++q)
               {
-                const unsigned int      g   = c * n_q + q;
+                const unsigned int      g   = point(c, q);
                 const double           *psi = &q_psi[g * n_max];
                 SymmetricTensor<2, dim> s   = sigma[k];
                 for (unsigned int r = 0; r < k; ++r)
@@ -751,7 +764,7 @@ namespace psmpm
         solve_constrained(fit, rho_v, rho_v_0);
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const unsigned int g   = c * n_q + q;
+            const unsigned int g   = point(c, q);
             const double      *psi = &q_psi[g * n_max];
             double             d   = rho_0;
             Tensor<1, dim>     dv  = rho_v_0;
@@ -848,7 +861,7 @@ namespace psmpm
         double *const density = scratch_density.data();
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const double *psi = &q_psi[(c * n_q + q) * n_max];
+            const double *psi = &q_psi[point(c, q) * n_max];
             density[q]        = r[dim];
             for (unsigned int j = 0; j < dim; ++j)
               density[q] += r[j] * psi[j];
@@ -862,7 +875,7 @@ namespace psmpm
         // 3. rho~ and rho~ v~ at the rule's points.
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const unsigned int g   = c * n_q + q;
+            const unsigned int g   = point(c, q);
             const double      *psi = &q_psi[g * n_max];
             Tensor<1, dim>     v   = v_fit[k];
             for (unsigned int j = 0; j < k; ++j)
@@ -897,7 +910,7 @@ namespace psmpm
         double             w[n_max] = {}, z[n_max];
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const unsigned int g   = c * n_q + q;
+            const unsigned int g   = point(c, q);
             const double      *psi = &q_psi[g * n_max];
             const double       dw  = density[q] * weights[g];
             for (unsigned int j = 0; j < k; ++j)
@@ -934,7 +947,7 @@ namespace psmpm
         double G[dim][dim] = {};
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const unsigned int g   = c * n_q + q;
+            const unsigned int g   = point(c, q);
             const double      *psi = &q_psi[g * n_max];
             for (unsigned int j = 0; j < dim; ++j)
               for (unsigned int l = 0; l < dim; ++l)
