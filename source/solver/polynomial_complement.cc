@@ -4,6 +4,7 @@
 #include <psmpm/solver/polynomial_complement.h>
 
 #include <cmath>
+#include <string>
 
 namespace psmpm
 {
@@ -11,24 +12,41 @@ namespace psmpm
   {
     namespace
     {
-      /// Monomials of degree <= k in (x - x0) / h.
+      /// The highest degree of the bases (the 1D B-splines: 5).
+      constexpr unsigned int max_degree = 8;
+
+      /// Monomials of degree <= k in y = (x - x0) / h, into @p r (the
+      /// order of n_monomials: by total degree, then by the power of the
+      /// last coordinate). Each power is std::pow as before, computed
+      /// once per coordinate instead of once per monomial, and nothing
+      /// is allocated (this runs at every quadrature point of every
+      /// cell at set-up: doc/performance.md, stop 33).
       template <int dim>
-      std::vector<double>
+      void
       monomials(const Point<dim>  &x,
                 const Point<dim>  &x0,
                 const double       h,
-                const unsigned int k)
+                const unsigned int k,
+                double            *r)
       {
-        std::vector<double>  r;
         const Tensor<1, dim> y = (x - x0) / h;
+        double               first[max_degree + 1], last[max_degree + 1];
+        // pow(y, 0) = 1 and pow(y, 1) = y exactly.
+        first[0] = last[0] = 1;
+        first[1]           = y[0];
+        last[1]            = y[dim - 1];
+        for (unsigned int a = 2; a <= k; ++a)
+          {
+            first[a] = std::pow(y[0], a);
+            last[a]  = std::pow(y[dim - 1], a);
+          }
         if (dim == 1)
           for (unsigned int a = 0; a <= k; ++a)
-            r.push_back(std::pow(y[0], a));
+            *r++ = first[a];
         else
           for (unsigned int total = 0; total <= k; ++total)
             for (unsigned int a = 0; a <= total; ++a)
-              r.push_back(std::pow(y[0], total - a) * std::pow(y[dim - 1], a));
-        return r;
+              *r++ = first[total - a] * last[a];
       }
     } // namespace
 
@@ -52,9 +70,13 @@ namespace psmpm
       const double                                  h,
       FullMatrix<double>                           *mass)
     {
-      const unsigned int  n  = space.dofs_per_cell();
-      const unsigned int  np = n_monomials<dim>(degree);
-      std::vector<double> values(n);
+      const unsigned int n  = space.dofs_per_cell();
+      const unsigned int np = n_monomials<dim>(degree);
+      AssertThrow(degree <= max_degree,
+                  ExcMessage("polynomial_complement: degree " +
+                             std::to_string(degree) + " above " +
+                             std::to_string(max_degree) + "."));
+      std::vector<double> values(n), p(np);
       FullMatrix<double>  S(n_patch, n_patch), B(np, n_patch), G(np, np);
       for (unsigned int s = 0; s < cells.size(); ++s)
         {
@@ -63,7 +85,7 @@ namespace psmpm
           for (unsigned int i = 0; i < q.size(); ++i)
             {
               space.evaluate(c, q.point(i), values.data(), nullptr);
-              const auto   p = monomials(q.point(i), x0, h, degree);
+              monomials(q.point(i), x0, h, degree, p.data());
               const double w = q.weight(i);
               for (unsigned int a = 0; a < n; ++a)
                 {

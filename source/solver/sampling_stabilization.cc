@@ -1,14 +1,14 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <deal.II/lac/lapack_full_matrix.h>
-
 #include <psmpm/solver/grid_system.h>
 #include <psmpm/solver/polynomial_complement.h>
 #include <psmpm/solver/sampling_stabilization.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace psmpm
 {
@@ -44,12 +44,17 @@ namespace psmpm
         return q + 2 * p * std::cos(phi + 2 * M_PI / 3);
       }
 
-      /// The eigenvectors of E^-1 S of eigenvalue 1, E-orthonormal, as the
+      /// An E-orthonormal basis of the non-polynomial modes, as the
       /// columns of an n x n_modes matrix. E is the cell's exact mass
-      /// matrix and S its polynomial complement, so E^-1 S is the
-      /// projection I - P (eigenvalue 0 on the polynomials, 1 on the
-      /// rest): with E = L L^T they are those of L^-1 S L^-T, mapped by
-      /// L^-T.
+      /// matrix and S its polynomial complement, so X = E^-1 S is the
+      /// E-orthogonal projection I - P onto the modes, and the E-inner
+      /// products of X's columns are X^T E X = S X = S (P is
+      /// E-self-adjoint). A Cholesky factorization of S with diagonal
+      /// pivoting, stopped after n_modes steps, picks n_modes columns of
+      /// X that span the modes: with S_pp = R^T R, Q = X_p R^-1 has
+      /// Q^T E Q = I. Three solves with E and a 3 x 3 triangle, where a
+      /// symmetric eigensolver (LAPACK, before stop 33) cost three
+      /// quarters of the set-up's instructions.
       FullMatrix<double>
       non_polynomial_modes(const FullMatrix<double> &E,
                            const FullMatrix<double> &S,
@@ -57,33 +62,86 @@ namespace psmpm
                            const unsigned int        cell)
       {
         const unsigned int n = E.m();
-        FullMatrix<double> L(n, n), Linv(n, n), T(n, n), C(n, n);
-        L.cholesky(E);
-        Linv.invert(L);
-        Linv.mmult(T, S);
-        T.mTmult(C, Linv);
-        LAPACKFullMatrix<double> lapack(n, n);
+        // Pivoted Cholesky of S: W holds the Schur complement.
+        FullMatrix<double>        W(S), R(n_modes, n_modes);
+        std::vector<unsigned int> pivots;
+        double                    largest = 0;
         for (unsigned int k = 0; k < n; ++k)
-          for (unsigned int l = 0; l < n; ++l)
-            lapack(k, l) = 0.5 * (C(k, l) + C(l, k));
-        Vector<double>     eigenvalues;
-        FullMatrix<double> Y;
-        lapack.compute_eigenvalues_symmetric(0.5, 1.5, 1e-12, eigenvalues, Y);
-        AssertThrow(eigenvalues.size() == n_modes,
-                    ExcMessage("Sampling stabilization: cell " +
-                               std::to_string(cell) + " has " +
-                               std::to_string(eigenvalues.size()) +
-                               " non-polynomial modes, expected " +
-                               std::to_string(n_modes) + "."));
-        // Q = L^-T Y.
+          largest = std::max(largest, S(k, k));
+        const double tolerance = 1e-8 * largest;
+        const auto   error     = [&](const std::string &what) {
+          return ExcMessage("Sampling stabilization: cell " +
+                            std::to_string(cell) + " has " + what +
+                            " non-polynomial modes, expected " +
+                            std::to_string(n_modes) + ".");
+        };
+        std::vector<bool>                used(n, false);
+        std::vector<std::vector<double>> rows;
+        for (unsigned int r = 0; r <= n_modes; ++r)
+          {
+            unsigned int j = n;
+            for (unsigned int k = 0; k < n; ++k)
+              if (!used[k] && (j == n || W(k, k) > W(j, j)))
+                j = k;
+            const double d = j < n ? W(j, j) : 0.;
+            if (r == n_modes)
+              {
+                // The rank of S is n_modes: nothing may be left.
+                AssertThrow(!(d > tolerance), error("more"));
+                break;
+              }
+            AssertThrow(d > tolerance, error("fewer"));
+            used[j] = true;
+            pivots.push_back(j);
+            const double        root = std::sqrt(d);
+            std::vector<double> row(n);
+            for (unsigned int k = 0; k < n; ++k)
+              row[k] = W(j, k) / root;
+            for (unsigned int k = 0; k < n; ++k)
+              for (unsigned int l = 0; l < n; ++l)
+                W(k, l) -= row[k] * row[l];
+            rows.push_back(row);
+          }
+        // R(r, q) = row_r[p_q] gives S_pp = R^T R; it is upper
+        // triangular, since a pivot's row and column of W vanish after
+        // its step.
+        for (unsigned int r = 0; r < n_modes; ++r)
+          for (unsigned int q = 0; q < n_modes; ++q)
+            R(r, q) = rows[r][pivots[q]];
+
+        // X_p = E^-1 S_:p by Cholesky solves.
+        FullMatrix<double> L(n, n);
+        L.cholesky(E);
+        FullMatrix<double> X(n, n_modes);
+        for (unsigned int q = 0; q < n_modes; ++q)
+          {
+            std::vector<double> x(n);
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                double v = S(k, pivots[q]);
+                for (unsigned int l = 0; l < k; ++l)
+                  v -= L(k, l) * x[l];
+                x[k] = v / L(k, k);
+              }
+            for (unsigned int k = n; k-- > 0;)
+              {
+                double v = x[k];
+                for (unsigned int l = k + 1; l < n; ++l)
+                  v -= L(l, k) * x[l];
+                x[k] = v / L(k, k);
+              }
+            for (unsigned int k = 0; k < n; ++k)
+              X(k, q) = x[k];
+          }
+        // Q = X_p R^-1, column by column (R upper triangular).
         FullMatrix<double> Q(n, n_modes);
         for (unsigned int k = 0; k < n; ++k)
-          for (unsigned int r = 0; r < n_modes; ++r)
+          for (unsigned int q = 0; q < n_modes; ++q)
             {
-              double v = 0;
-              for (unsigned int l = 0; l < n; ++l)
-                v += Linv(l, k) * Y(l, r);
-              Q(k, r) = v;
+              double v = X(k, q);
+              for (unsigned int t = 0; t < q; ++t)
+                v -= Q(k, t) * R(t, q);
+              Q(k, q) = v / R(q, q);
             }
         return Q;
       }
