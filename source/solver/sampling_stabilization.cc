@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/lac/vector.h>
+
 #include <psmpm/solver/grid_system.h>
 #include <psmpm/solver/polynomial_complement.h>
 #include <psmpm/solver/sampling_stabilization.h>
@@ -104,45 +106,37 @@ namespace psmpm
           }
         // R(r, q) = row_r[p_q] gives S_pp = R^T R; it is upper
         // triangular, since a pivot's row and column of W vanish after
-        // its step.
+        // its step. Stored transposed: Q = X_p R^-1 is, row by row, a
+        // forward substitution with R^T.
+        FullMatrix<double> RT(n_modes, n_modes);
         for (unsigned int r = 0; r < n_modes; ++r)
           for (unsigned int q = 0; q < n_modes; ++q)
-            R(r, q) = rows[r][pivots[q]];
+            RT(q, r) = rows[r][pivots[q]];
 
-        // X_p = E^-1 S_:p by Cholesky solves.
-        FullMatrix<double> L(n, n);
+        // X_p = E^-1 S_:p, with E = L L^T.
+        FullMatrix<double> L(n, n), LT(n, n), X(n, n_modes);
         L.cholesky(E);
-        FullMatrix<double> X(n, n_modes);
+        LT.copy_transposed(L);
+        Vector<double> column(n), y(n), x(n);
         for (unsigned int q = 0; q < n_modes; ++q)
           {
-            std::vector<double> x(n);
             for (unsigned int k = 0; k < n; ++k)
-              {
-                double v = S(k, pivots[q]);
-                for (unsigned int l = 0; l < k; ++l)
-                  v -= L(k, l) * x[l];
-                x[k] = v / L(k, k);
-              }
-            for (unsigned int k = n; k-- > 0;)
-              {
-                double v = x[k];
-                for (unsigned int l = k + 1; l < n; ++l)
-                  v -= L(l, k) * x[l];
-                x[k] = v / L(k, k);
-              }
+              column(k) = S(k, pivots[q]);
+            L.forward(y, column);
+            LT.backward(x, y);
             for (unsigned int k = 0; k < n; ++k)
-              X(k, q) = x[k];
+              X(k, q) = x(k);
           }
-        // Q = X_p R^-1, column by column (R upper triangular).
         FullMatrix<double> Q(n, n_modes);
+        Vector<double>     x_row(n_modes), q_row(n_modes);
         for (unsigned int k = 0; k < n; ++k)
-          for (unsigned int q = 0; q < n_modes; ++q)
-            {
-              double v = X(k, q);
-              for (unsigned int t = 0; t < q; ++t)
-                v -= Q(k, t) * R(t, q);
-              Q(k, q) = v / R(q, q);
-            }
+          {
+            for (unsigned int q = 0; q < n_modes; ++q)
+              x_row(q) = X(k, q);
+            RT.forward(q_row, x_row);
+            for (unsigned int q = 0; q < n_modes; ++q)
+              Q(k, q) = q_row(q);
+          }
         return Q;
       }
     } // namespace
@@ -173,13 +167,9 @@ namespace psmpm
       weights.clear();
       if (!acts_on(grid))
         return;
-      const auto        &space = grid.get_space();
-      const auto        &dh    = grid.get_dof_handler();
-      const unsigned int n     = grid.dofs_per_cell;
-      std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
-        grid.n_cells);
-      for (const auto &cell : dh.active_cell_iterators())
-        cells[cell->active_cell_index()] = cell;
+      const auto               &space = grid.get_space();
+      const auto               &dh    = grid.get_dof_handler();
+      const unsigned int        n     = grid.dofs_per_cell;
       std::vector<unsigned int> identity(n);
       for (unsigned int k = 0; k < n; ++k)
         identity[k] = k;
@@ -187,29 +177,33 @@ namespace psmpm
       complement.resize(owned.size() * n * n);
       basis.resize(owned.size() * n * n_modes);
       inverse_measure.resize(owned.size());
-      for (unsigned int i = 0; i < owned.size(); ++i)
-        {
-          const unsigned int c    = owned[i];
-          const auto        &cell = cells[c];
-          FullMatrix<double> E;
-          const auto         S = polynomial_complement(space,
-                                               dh,
-                                               {c},
-                                               {identity},
-                                               n,
-                                               space.degree(),
-                                               cell->center(),
-                                               cell->diameter(),
-                                               &E);
-          for (unsigned int k = 0; k < n; ++k)
-            for (unsigned int l = 0; l < n; ++l)
-              complement[(i * n + k) * n + l] = S(k, l);
-          inverse_measure[i]         = 1. / cell->measure();
-          const FullMatrix<double> Q = non_polynomial_modes(E, S, n_modes, c);
-          for (unsigned int k = 0; k < n; ++k)
-            for (unsigned int r = 0; r < n_modes; ++r)
-              basis[(i * n + k) * n_modes + r] = Q(k, r);
-        }
+      // owned_cells() lists the owned cells in active cell order.
+      unsigned int i = 0;
+      for (const auto &cell : dh.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const unsigned int c = cell->active_cell_index();
+            AssertDimension(c, owned[i]);
+            FullMatrix<double> E;
+            const auto         S = polynomial_complement(space,
+                                                 dh,
+                                                 {c},
+                                                 {identity},
+                                                 n,
+                                                 space.degree(),
+                                                 cell->center(),
+                                                 cell->diameter(),
+                                                 &E);
+            for (unsigned int k = 0; k < n; ++k)
+              for (unsigned int l = 0; l < n; ++l)
+                complement[(i * n + k) * n + l] = S(k, l);
+            inverse_measure[i]         = 1. / cell->measure();
+            const FullMatrix<double> Q = non_polynomial_modes(E, S, n_modes, c);
+            for (unsigned int k = 0; k < n; ++k)
+              for (unsigned int r = 0; r < n_modes; ++r)
+                basis[(i * n + k) * n_modes + r] = Q(k, r);
+            ++i;
+          }
     }
 
     template <int dim>
