@@ -46,22 +46,160 @@ namespace psmpm
         return q + 2 * p * std::cos(phi + 2 * M_PI / 3);
       }
 
-      /// An E-orthonormal basis of the non-polynomial modes, as the
-      /// columns of an n x n_modes matrix. E is the cell's exact mass
-      /// matrix and S its polynomial complement, so X = E^-1 S is the
-      /// E-orthogonal projection I - P onto the modes, and the E-inner
-      /// products of X's columns are X^T E X = S X = S (P is
-      /// E-self-adjoint). A Cholesky factorization of S with diagonal
+      /// Whether the symmetric 3 x 3 matrix (entries as in
+      /// smallest_eigenvalue()) has an eigenvalue below @p s: A - s I is
+      /// not positive definite (its LDL^T factorization). A screen that
+      /// spares the well-sampled cells smallest_eigenvalue()'s acos and
+      /// cos.
+      bool
+      has_eigenvalue_below(const double a00,
+                           const double a11,
+                           const double a22,
+                           const double a01,
+                           const double a02,
+                           const double a12,
+                           const double s)
+      {
+        const double d0 = a00 - s;
+        if (!(d0 > 0))
+          return true;
+        const double l10 = a01 / d0, l20 = a02 / d0;
+        const double d1 = a11 - s - l10 * a01;
+        if (!(d1 > 0))
+          return true;
+        const double l21 = (a12 - l20 * a01) / d1;
+        return !(a22 - s - l20 * a02 - l21 * l21 * d1 > 0);
+      }
+
+      /// Eigenvalues @p values and eigenvectors (the columns of @p V) of
+      /// the symmetric 3 x 3 matrix @p A, by cyclic Jacobi rotations to
+      /// round-off (repeated and zero eigenvalues alike; no allocation).
+      void
+      eigen_3x3(double A[3][3], double values[3], double V[3][3])
+      {
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            V[i][j] = i == j;
+        for (unsigned int sweep = 0; sweep < 50; ++sweep)
+          {
+            const double off =
+              A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2];
+            const double diagonal =
+              A[0][0] * A[0][0] + A[1][1] * A[1][1] + A[2][2] * A[2][2];
+            if (!(off > 1e-32 * diagonal))
+              break;
+            for (unsigned int p = 0; p < 2; ++p)
+              for (unsigned int q = p + 1; q < 3; ++q)
+                {
+                  if (A[p][q] == 0)
+                    continue;
+                  const double theta = (A[q][q] - A[p][p]) / (2 * A[p][q]);
+                  const double t =
+                    (theta >= 0 ? 1. : -1.) /
+                    (std::abs(theta) + std::sqrt(theta * theta + 1));
+                  const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+                  // A <- J^T A J, V <- V J with the rotation J in (p, q).
+                  for (unsigned int k = 0; k < 3; ++k)
+                    {
+                      const double akp = A[k][p], akq = A[k][q];
+                      A[k][p] = c * akp - s * akq;
+                      A[k][q] = s * akp + c * akq;
+                    }
+                  for (unsigned int k = 0; k < 3; ++k)
+                    {
+                      const double apk = A[p][k], aqk = A[q][k];
+                      A[p][k] = c * apk - s * aqk;
+                      A[q][k] = s * apk + c * aqk;
+                    }
+                  for (unsigned int k = 0; k < 3; ++k)
+                    {
+                      const double vkp = V[k][p], vkq = V[k][q];
+                      V[k][p] = c * vkp - s * vkq;
+                      V[k][q] = s * vkp + c * vkq;
+                    }
+                }
+          }
+        for (unsigned int i = 0; i < 3; ++i)
+          values[i] = A[i][i];
+      }
+
+      /// Eigenpairs of the symmetric 3 x 3 matrix @p A as eigen_3x3(),
+      /// in closed form: the eigenvalues as in smallest_eigenvalue(), an
+      /// eigenvector as the longest cross product of two rows of
+      /// A - lambda I. Where two eigenvalues are too close for that to
+      /// be accurate, eigen_3x3(). A tenth of the Jacobi rotations'
+      /// instructions (the throughput bar lifts ~5,000 cells per step).
+      void
+      eigenpairs_3x3(double A[3][3], double values[3], double V[3][3])
+      {
+        const double q = (A[0][0] + A[1][1] + A[2][2]) / 3;
+        const double p1 =
+          A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2];
+        const double p2 = (A[0][0] - q) * (A[0][0] - q) +
+                          (A[1][1] - q) * (A[1][1] - q) +
+                          (A[2][2] - q) * (A[2][2] - q) + 2 * p1;
+        const double p = std::sqrt(p2 / 6);
+        const double scale =
+          std::max({std::abs(A[0][0]), std::abs(A[1][1]), std::abs(A[2][2])});
+        if (!(p > 1e-6 * scale))
+          return eigen_3x3(A, values, V);
+        const double r =
+          ((A[0][0] - q) * ((A[1][1] - q) * (A[2][2] - q) - A[1][2] * A[1][2]) -
+           A[0][1] * (A[0][1] * (A[2][2] - q) - A[1][2] * A[0][2]) +
+           A[0][2] * (A[0][1] * A[1][2] - (A[1][1] - q) * A[0][2])) /
+          (2 * p * p * p);
+        const double phi = std::acos(std::clamp(r, -1., 1.)) / 3;
+        values[0]        = q + 2 * p * std::cos(phi);
+        values[2]        = q + 2 * p * std::cos(phi + 2 * M_PI / 3);
+        values[1]        = 3 * q - values[0] - values[2];
+        if (!(values[0] - values[1] > 1e-6 * p &&
+              values[1] - values[2] > 1e-6 * p))
+          return eigen_3x3(A, values, V);
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            double R[3][3];
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                R[a][b] = A[a][b] - (a == b ? values[j] : 0.);
+            double best[3] = {}, best_norm = 0;
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                const unsigned int b = (a + 1) % 3;
+                const double c[3]    = {R[a][1] * R[b][2] - R[a][2] * R[b][1],
+                                        R[a][2] * R[b][0] - R[a][0] * R[b][2],
+                                        R[a][0] * R[b][1] - R[a][1] * R[b][0]};
+                const double norm    = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+                if (norm > best_norm)
+                  {
+                    best_norm = norm;
+                    for (unsigned int k = 0; k < 3; ++k)
+                      best[k] = c[k];
+                  }
+              }
+            const double length = std::sqrt(best_norm);
+            for (unsigned int k = 0; k < 3; ++k)
+              V[k][j] = best[k] / length;
+          }
+      }
+
+      /// An E-orthonormal basis of the modes that S acts on, as the
+      /// columns of an n x n_modes matrix (@p name names them in the
+      /// error). E is the cell's exact mass matrix and S = E P, P the
+      /// E-orthogonal projection onto the modes (I - P_2 for the
+      /// non-polynomial modes, P_2 - P_1 for the quadratic ones), so
+      /// X = E^-1 S = P and the E-inner products of X's columns are
+      /// X^T E X = S X = S. A Cholesky factorization of S with diagonal
       /// pivoting, stopped after n_modes steps, picks n_modes columns of
       /// X that span the modes: with S_pp = R^T R, Q = X_p R^-1 has
       /// Q^T E Q = I. Three solves with E and a 3 x 3 triangle, where a
       /// symmetric eigensolver (LAPACK, before stop 33) cost three
       /// quarters of the set-up's instructions.
       FullMatrix<double>
-      non_polynomial_modes(const FullMatrix<double> &E,
-                           const FullMatrix<double> &S,
-                           const unsigned int        n_modes,
-                           const unsigned int        cell)
+      modes_of(const FullMatrix<double> &E,
+               const FullMatrix<double> &S,
+               const unsigned int        n_modes,
+               const unsigned int        cell,
+               const std::string        &name)
       {
         const unsigned int n = E.m();
         // Pivoted Cholesky of S: W holds the Schur complement.
@@ -73,9 +211,9 @@ namespace psmpm
         const double tolerance = 1e-8 * largest;
         const auto   error     = [&](const std::string &what) {
           return ExcMessage("Sampling stabilization: cell " +
-                            std::to_string(cell) + " has " + what +
-                            " non-polynomial modes, expected " +
-                            std::to_string(n_modes) + ".");
+                            std::to_string(cell) + " has " + what + " " + name +
+                            " modes, expected " + std::to_string(n_modes) +
+                            ".");
         };
         std::vector<bool>                used(n, false);
         std::vector<std::vector<double>> rows;
@@ -162,9 +300,11 @@ namespace psmpm
     SamplingStabilization<dim>::reinit(const GridSystem<dim> &grid)
     {
       complement.clear();
+      quadratic_factor.clear();
       basis.clear();
       inverse_measure.clear();
       weights.clear();
+      quadratic_lifts.clear();
       if (!acts_on(grid))
         return;
       const auto               &space = grid.get_space();
@@ -175,7 +315,8 @@ namespace psmpm
         identity[k] = k;
       const auto &owned = grid.owned_cells();
       complement.resize(owned.size() * n * n);
-      basis.resize(owned.size() * n * n_modes);
+      quadratic_factor.resize(owned.size() * n * n_modes);
+      basis.resize(owned.size() * n * 2 * n_modes);
       inverse_measure.resize(owned.size());
       // owned_cells() lists the owned cells in active cell order.
       unsigned int i = 0;
@@ -184,24 +325,41 @@ namespace psmpm
           {
             const unsigned int c = cell->active_cell_index();
             AssertDimension(c, owned[i]);
+            const auto complement_of = [&](const unsigned int  degree,
+                                           FullMatrix<double> *E) {
+              return polynomial_complement(space,
+                                           dh,
+                                           {c},
+                                           {identity},
+                                           n,
+                                           degree,
+                                           cell->center(),
+                                           cell->diameter(),
+                                           E);
+            };
             FullMatrix<double> E;
-            const auto         S = polynomial_complement(space,
-                                                 dh,
-                                                 {c},
-                                                 {identity},
-                                                 n,
-                                                 space.degree(),
-                                                 cell->center(),
-                                                 cell->diameter(),
-                                                 &E);
+            const auto         S = complement_of(space.degree(), &E);
+            // S_1 - S = E (P_2 - P_1): the quadratic modes.
+            FullMatrix<double> S_q = complement_of(1, nullptr);
+            S_q.add(-1., S);
             for (unsigned int k = 0; k < n; ++k)
               for (unsigned int l = 0; l < n; ++l)
                 complement[(i * n + k) * n + l] = S(k, l);
-            inverse_measure[i]         = 1. / cell->measure();
-            const FullMatrix<double> Q = non_polynomial_modes(E, S, n_modes, c);
+            inverse_measure[i] = 1. / cell->measure();
+            const FullMatrix<double> Q =
+              modes_of(E, S, n_modes, c, "non-polynomial");
+            const FullMatrix<double> Q_q =
+              modes_of(E, S_q, n_modes, c, "quadratic");
+            // S_q = E Q_q Q_q^T E: its factor E Q_q is a third of S_q.
+            FullMatrix<double> EQ_q(n, n_modes);
+            E.mmult(EQ_q, Q_q);
             for (unsigned int k = 0; k < n; ++k)
               for (unsigned int r = 0; r < n_modes; ++r)
-                basis[(i * n + k) * n_modes + r] = Q(k, r);
+                {
+                  basis[(i * n + k) * 2 * n_modes + r]           = Q(k, r);
+                  basis[(i * n + k) * 2 * n_modes + n_modes + r] = Q_q(k, r);
+                  quadratic_factor[(i * n + k) * n_modes + r]    = EQ_q(k, r);
+                }
             ++i;
           }
     }
@@ -220,9 +378,10 @@ namespace psmpm
       const auto  &lumped     = grid.cell_arrays().lumped;
       const auto  &mass       = grid.cell_arrays().mass;
       weights.assign(owned.size(), 0.);
+      quadratic_lifts.clear();
       // n_functions at compile time lets the compiler unroll the
       // products (this runs every step on every cell).
-      constexpr unsigned int n = n_functions;
+      constexpr unsigned int n = n_functions, m2 = 2 * n_modes;
       for (unsigned int i = 0; i < owned.size(); ++i)
         {
           const unsigned int c = owned[i];
@@ -233,40 +392,96 @@ namespace psmpm
             m += lumped[c * n + k];
           if (!(m > 0))
             continue;
-          // A = Q^T M_c Q / rho: the particles' mass of the
-          // non-polynomial modes relative to the exact one (the
-          // identity where they integrate like the exact integral).
+          // A = Q^T M_c Q / rho for both sets of modes: the particles'
+          // mass of the modes relative to the exact one (the identity
+          // where they integrate like the exact integral).
           const double *M = &mass[c * n * n];
-          const double *Q = &basis[i * n * n_modes];
-          double        MQ[n * n_modes];
+          const double *Q = &basis[i * n * m2];
+          double        MQ[n * m2];
           for (unsigned int k = 0; k < n; ++k)
             {
-              double v[n_modes] = {};
+              double v[m2] = {};
               for (unsigned int l = 0; l < n; ++l)
-                for (unsigned int r = 0; r < n_modes; ++r)
-                  v[r] += M[k * n + l] * Q[l * n_modes + r];
+                for (unsigned int r = 0; r < m2; ++r)
+                  v[r] += M[k * n + l] * Q[l * m2 + r];
+              for (unsigned int r = 0; r < m2; ++r)
+                MQ[k * m2 + r] = v[r];
+            }
+          const double rho = m * inverse_measure[i];
+          // Upper triangle of Q^T M_c Q for the n_modes columns from o.
+          const auto project = [&](const unsigned int o,
+                                   double(&G)[n_modes][n_modes]) {
+            for (unsigned int k = 0; k < n; ++k)
               for (unsigned int r = 0; r < n_modes; ++r)
-                MQ[k * n_modes + r] = v[r];
-            }
+                for (unsigned int s = r; s < n_modes; ++s)
+                  G[r][s] += Q[k * m2 + o + r] * MQ[k * m2 + o + s];
+          };
+          // A of the non-polynomial modes (the first n_modes columns).
           double A[n_modes][n_modes] = {};
-          for (unsigned int k = 0; k < n; ++k)
-            for (unsigned int r = 0; r < n_modes; ++r)
-              for (unsigned int s = r; s < n_modes; ++s)
-                A[r][s] += Q[k * n_modes + r] * MQ[k * n_modes + s];
-          const double rho    = m * inverse_measure[i];
-          const double lambda = smallest_eigenvalue(A[0][0],
-                                                    A[1][1],
-                                                    A[2][2],
-                                                    A[0][1],
-                                                    A[0][2],
-                                                    A[1][2]) /
-                                rho;
-          // Lift the smallest to the target (Q^T S_c Q = I).
-          if (lambda < target)
+          project(0, A);
+          bool weighted = false;
+          if (has_eigenvalue_below(A[0][0],
+                                   A[1][1],
+                                   A[2][2],
+                                   A[0][1],
+                                   A[0][2],
+                                   A[1][2],
+                                   target * rho))
             {
-              weights[i] = rho * (target - lambda);
-              ++n_weighted;
+              const double lambda = smallest_eigenvalue(A[0][0],
+                                                        A[1][1],
+                                                        A[2][2],
+                                                        A[0][1],
+                                                        A[0][2],
+                                                        A[1][2]) /
+                                    rho;
+              // Lift the smallest to the target (Q^T S_c Q = I).
+              weighted = lambda < target;
+              if (weighted)
+                weights[i] = rho * (target - lambda);
             }
+          // The quadratic modes (the other n_modes columns): a layout
+          // that leaves a quadratic unseen (particles on two lines do not
+          // see (y - y_1)(y - y_2)) gets a singular matrix that S_c does
+          // not touch. Only the unseen directions are lifted, each to
+          // the target, so the quadratics the particles see keep their
+          // particle mass.
+          double B[n_modes][n_modes] = {};
+          project(n_modes, B);
+          if (has_eigenvalue_below(B[0][0],
+                                   B[1][1],
+                                   B[2][2],
+                                   B[0][1],
+                                   B[0][2],
+                                   B[1][2],
+                                   target * rho))
+            {
+              for (unsigned int r = 0; r < n_modes; ++r)
+                for (unsigned int s = 0; s < r; ++s)
+                  B[r][s] = B[s][r];
+              double values[n_modes], V[n_modes][n_modes];
+              eigenpairs_3x3(B, values, V);
+              // g_j = sqrt(rho (t - lambda_j)) F v_j, F = E Q_q: the
+              // lift is sum_j g_j g_j^T (Q_q^T F = I).
+              Lift        lift{i, {}};
+              const auto *F = &quadratic_factor[i * n * n_modes];
+              for (unsigned int j = 0; j < n_modes; ++j)
+                if (values[j] / rho < target)
+                  {
+                    const double w =
+                      std::sqrt(rho * (target - values[j] / rho));
+                    for (unsigned int k = 0; k < n; ++k)
+                      {
+                        double g = 0;
+                        for (unsigned int r = 0; r < n_modes; ++r)
+                          g += F[k * n_modes + r] * V[r][j];
+                        lift.columns[k * n_modes + j] = w * g;
+                      }
+                  }
+              quadratic_lifts.push_back(lift);
+              weighted = true;
+            }
+          n_weighted += weighted;
         }
       return n_weighted;
     }
@@ -289,6 +504,19 @@ namespace psmpm
             for (unsigned int kl = 0; kl < n * n; ++kl)
               M[kl] += w * S[kl];
           }
+      for (const auto &lift : quadratic_lifts)
+        {
+          double       *M = &mass[owned[lift.cell] * n * n];
+          const double *G = lift.columns.data();
+          for (unsigned int k = 0; k < n; ++k)
+            for (unsigned int l = 0; l < n; ++l)
+              {
+                double s = 0;
+                for (unsigned int j = 0; j < n_modes; ++j)
+                  s += G[k * n_modes + j] * G[l * n_modes + j];
+                M[k * n + l] += s;
+              }
+        }
     }
 
     template class SamplingStabilization<1>;

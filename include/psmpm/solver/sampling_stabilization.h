@@ -5,6 +5,7 @@
 #define psmpm_solver_sampling_stabilization_h
 
 
+#include <array>
 #include <vector>
 
 namespace psmpm
@@ -35,9 +36,20 @@ namespace psmpm
      * below the target t gets rho_c (t - lambda) S_c, which lifts it to t
      * (Q_c^T S_c Q_c = I); well-sampled cells get nothing.
      *
-     * S_c and Q_c are mesh data, computed in reinit(); each step weigh()
+     * The quadratic modes (the quadratics E_c-orthogonal to the affine
+     * fields, Q_q, S_q = E_c Q_q Q_q^T E_c = S_1 - S_c with S_1 the
+     * complement of the affine fields) get the same test: particles on
+     * two lines per cell row do not see the quadratic that vanishes on
+     * both lines, S_c is zero on it, and the matrix stays singular (the
+     * thesis bar with 5 x 2 particles per block went unstable at the
+     * automatic time step). There only the unseen directions, the
+     * eigenvectors of Q_q^T M_c Q_q / rho_c below t, are lifted to t, so
+     * the quadratics that the particles do see keep their particle mass;
+     * S_q is zero on the affine fields and on the non-polynomial modes.
+     *
+     * S_c, Q_c and Q_q are mesh data, computed in reinit(); each step weigh()
      * reads the particle blocks (before the mass strategy changes them)
-     * and apply() adds the weighted S_c (after it).
+     * and apply() adds the weighted S_c and the lifts (after it).
      */
     template <int dim>
     class SamplingStabilization
@@ -77,13 +89,26 @@ namespace psmpm
       const double                  target;
       /// Per owned cell (owned_cells() order): S_c, n x n row-major.
       std::vector<double> complement;
-      /// Per owned cell: the E_c-orthonormal basis Q_c of the
-      /// non-polynomial modes, n x n_modes row-major (Q^T S_c Q = I).
+      /// Per owned cell: the factor F = E_c Q_q of the quadratic modes'
+      /// S_q = F F^T, n x n_modes row-major.
+      std::vector<double> quadratic_factor;
+      /// Per owned cell: the E_c-orthonormal bases Q_c of the
+      /// non-polynomial modes and Q_q of the quadratic ones, side by side,
+      /// n x 2 n_modes row-major (Q^T S_c Q = I, Q_q^T S_q Q_q = I).
       std::vector<double> basis;
       /// Per owned cell: 1 / |c|.
       std::vector<double> inverse_measure;
       /// Per owned cell: the step's weight of S_c.
       std::vector<double> weights;
+      /// A cell's lift of its unseen quadratic modes: M_c += G G^T, G
+      /// n x n_modes row-major (zero columns for the modes it sees).
+      struct Lift
+      {
+        unsigned int                              cell; ///< owned_cells() index
+        std::array<double, n_functions * n_modes> columns;
+      };
+      /// The step's lifts (usually none: only sparse layouts need them).
+      std::vector<Lift> quadratic_lifts;
     };
   } // namespace Solver
 } // namespace psmpm
