@@ -48,6 +48,33 @@ namespace psmpm
             for (unsigned int a = 0; a <= total; ++a)
               *r++ = first[total - a] * last[a];
       }
+
+      /// M - B_k^T G_k^-1 B_k with B_k the first @p k rows of @p B and G_k
+      /// the leading k x k block of @p G: the complement of the
+      /// polynomials whose monomials come first (those of lower degree),
+      /// made exactly symmetric. With every row it is S of the full
+      /// degree; with fewer, the sub-blocks hold the same sums as a
+      /// separate pass of that degree would, so the result is the same.
+      FullMatrix<double>
+      minus_projection(const FullMatrix<double> &M,
+                       const FullMatrix<double> &B,
+                       const FullMatrix<double> &G,
+                       const unsigned int        k)
+      {
+        const unsigned int n = M.m();
+        FullMatrix<double> S(M), G_k(k, k), B_k(k, n);
+        G_k.fill(G);
+        B_k.fill(B);
+        G_k.gauss_jordan();
+        FullMatrix<double> GB(k, n), BtGB(n, n);
+        G_k.mmult(GB, B_k);
+        B_k.Tmmult(BtGB, GB);
+        S.add(-1., BtGB);
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = a + 1; b < n; ++b)
+            S(a, b) = S(b, a) = 0.5 * (S(a, b) + S(b, a));
+        return S;
+      }
     } // namespace
 
     template <int dim>
@@ -68,7 +95,9 @@ namespace psmpm
       const unsigned int                            degree,
       const Point<dim>                             &x0,
       const double                                  h,
-      FullMatrix<double>                           *mass)
+      FullMatrix<double>                           *mass,
+      const unsigned int                            lower_degree,
+      FullMatrix<double>                           *lower)
     {
       const unsigned int n  = space.dofs_per_cell();
       const unsigned int np = n_monomials<dim>(degree);
@@ -102,17 +131,9 @@ namespace psmpm
         }
       if (mass != nullptr)
         *mass = S;
-      // S = M - B^T G^-1 B.
-      G.gauss_jordan();
-      FullMatrix<double> GB(np, n_patch), BtGB(n_patch, n_patch);
-      G.mmult(GB, B);
-      B.Tmmult(BtGB, GB);
-      S.add(-1., BtGB);
-      // Exact symmetry.
-      for (unsigned int a = 0; a < n_patch; ++a)
-        for (unsigned int b = a + 1; b < n_patch; ++b)
-          S(a, b) = S(b, a) = 0.5 * (S(a, b) + S(b, a));
-      return S;
+      if (lower != nullptr)
+        *lower = minus_projection(S, B, G, n_monomials<dim>(lower_degree));
+      return minus_projection(S, B, G, np);
     }
 
     template unsigned int
@@ -128,6 +149,8 @@ namespace psmpm
                           const unsigned int,
                           const Point<1> &,
                           const double,
+                          FullMatrix<double> *,
+                          const unsigned int,
                           FullMatrix<double> *);
     template FullMatrix<double>
     polynomial_complement(const Basis::Space<2> &,
@@ -138,6 +161,8 @@ namespace psmpm
                           const unsigned int,
                           const Point<2> &,
                           const double,
+                          FullMatrix<double> *,
+                          const unsigned int,
                           FullMatrix<double> *);
   } // namespace Solver
 } // namespace psmpm

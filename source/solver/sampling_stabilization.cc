@@ -325,22 +325,21 @@ namespace psmpm
           {
             const unsigned int c = cell->active_cell_index();
             AssertDimension(c, owned[i]);
-            const auto complement_of = [&](const unsigned int  degree,
-                                           FullMatrix<double> *E) {
-              return polynomial_complement(space,
-                                           dh,
-                                           {c},
-                                           {identity},
-                                           n,
-                                           degree,
-                                           cell->center(),
-                                           cell->diameter(),
-                                           E);
-            };
-            FullMatrix<double> E;
-            const auto         S = complement_of(space.degree(), &E);
+            // S_1, the complement of the affine fields, from the same
+            // quadrature as S (the affine monomials come first).
+            FullMatrix<double> E, S_q;
+            const auto         S = polynomial_complement(space,
+                                                 dh,
+                                                 {c},
+                                                 {identity},
+                                                 n,
+                                                 space.degree(),
+                                                 cell->center(),
+                                                 cell->diameter(),
+                                                 &E,
+                                                 1,
+                                                 &S_q);
             // S_1 - S = E (P_2 - P_1): the quadratic modes.
-            FullMatrix<double> S_q = complement_of(1, nullptr);
             S_q.add(-1., S);
             for (unsigned int k = 0; k < n; ++k)
               for (unsigned int l = 0; l < n; ++l)

@@ -33,7 +33,9 @@ namespace psmpm
      * exactly zero. Mesh data only; the mass strategies weight it per step
      * (ghost penalty on pairs of cells, the sampling stabilisation on
      * single cells). If @p mass is given, it receives M (computed on the
-     * way).
+     * way). If @p lower is given, it receives the complement of the
+     * polynomials of degree @p lower_degree (< @p degree) from the same
+     * quadrature: the same values as a separate call with that degree.
      */
     template <int dim>
     FullMatrix<double>
@@ -46,7 +48,9 @@ namespace psmpm
       const unsigned int                            degree,
       const Point<dim>                             &x0,
       const double                                  h,
-      FullMatrix<double>                           *mass = nullptr);
+      FullMatrix<double>                           *mass         = nullptr,
+      const unsigned int                            lower_degree = 0,
+      FullMatrix<double>                           *lower        = nullptr);
 
     /// Number of monomials of degree at most @p degree in dim variables.
     template <int dim>
