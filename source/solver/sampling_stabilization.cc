@@ -18,22 +18,25 @@ namespace psmpm
   {
     namespace
     {
-      /// Smallest eigenvalue of the symmetric 3 x 3 matrix with entries
-      /// a00, a11, a22 (diagonal), a01, a02, a12 (closed form, Smith 1961).
-      double
-      smallest_eigenvalue(const double a00,
-                          const double a11,
-                          const double a22,
-                          const double a01,
-                          const double a02,
-                          const double a12)
+      /// The closed form of the eigenvalues of the symmetric 3 x 3 matrix
+      /// @p A (upper triangle read; Smith 1961): q + 2 p cos(phi + 2 pi
+      /// k / 3), k = 0 the largest, k = 2 the smallest; p = 0: all are q.
+      struct ClosedForm
       {
+        double q, p, phi;
+      };
+
+      ClosedForm
+      closed_form(const double (&A)[3][3])
+      {
+        const double a00 = A[0][0], a11 = A[1][1], a22 = A[2][2], a01 = A[0][1],
+                     a02 = A[0][2], a12 = A[1][2];
         const double q  = (a00 + a11 + a22) / 3;
         const double p1 = a01 * a01 + a02 * a02 + a12 * a12;
         const double p2 = (a00 - q) * (a00 - q) + (a11 - q) * (a11 - q) +
                           (a22 - q) * (a22 - q) + 2 * p1;
         if (!(p2 > 0))
-          return q;
+          return {q, 0., 0.};
         const double p   = std::sqrt(p2 / 6);
         const double b00 = (a00 - q) / p, b11 = (a11 - q) / p,
                      b22 = (a22 - q) / p, b01 = a01 / p, b02 = a02 / p,
@@ -42,24 +45,27 @@ namespace psmpm
           (b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) +
            b02 * (b01 * b12 - b11 * b02)) /
           2;
-        const double phi = std::acos(std::clamp(r, -1., 1.)) / 3;
-        return q + 2 * p * std::cos(phi + 2 * M_PI / 3);
+        return {q, p, std::acos(std::clamp(r, -1., 1.)) / 3};
       }
 
-      /// Whether the symmetric 3 x 3 matrix (entries as in
-      /// smallest_eigenvalue()) has an eigenvalue below @p s: A - s I is
+      /// Smallest eigenvalue of the symmetric 3 x 3 matrix @p A.
+      double
+      smallest_eigenvalue(const double (&A)[3][3])
+      {
+        const auto c = closed_form(A);
+        return c.p > 0 ? c.q + 2 * c.p * std::cos(c.phi + 2 * M_PI / 3) : c.q;
+      }
+
+      /// Whether the symmetric 3 x 3 matrix @p A (upper triangle read)
+      /// has an eigenvalue below @p s: A - s I is
       /// not positive definite (its LDL^T factorization). A screen that
       /// spares the well-sampled cells smallest_eigenvalue()'s acos and
       /// cos.
       bool
-      has_eigenvalue_below(const double a00,
-                           const double a11,
-                           const double a22,
-                           const double a01,
-                           const double a02,
-                           const double a12,
-                           const double s)
+      has_eigenvalue_below(const double (&A)[3][3], const double s)
       {
+        const double a00 = A[0][0], a11 = A[1][1], a22 = A[2][2], a01 = A[0][1],
+                     a02 = A[0][2], a12 = A[1][2];
         const double d0 = a00 - s;
         if (!(d0 > 0))
           return true;
@@ -75,7 +81,7 @@ namespace psmpm
       /// the symmetric 3 x 3 matrix @p A, by cyclic Jacobi rotations to
       /// round-off (repeated and zero eigenvalues alike; no allocation).
       void
-      eigen_3x3(double A[3][3], double values[3], double V[3][3])
+      eigen_3x3(double (&A)[3][3], double (&values)[3], double (&V)[3][3])
       {
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
@@ -124,34 +130,23 @@ namespace psmpm
       }
 
       /// Eigenpairs of the symmetric 3 x 3 matrix @p A as eigen_3x3(),
-      /// in closed form: the eigenvalues as in smallest_eigenvalue(), an
+      /// in closed form: the eigenvalues from closed_form(), an
       /// eigenvector as the longest cross product of two rows of
       /// A - lambda I. Where two eigenvalues are too close for that to
       /// be accurate, eigen_3x3(). A tenth of the Jacobi rotations'
       /// instructions (the throughput bar lifts ~5,000 cells per step).
       void
-      eigenpairs_3x3(double A[3][3], double values[3], double V[3][3])
+      eigenpairs_3x3(double (&A)[3][3], double (&values)[3], double (&V)[3][3])
       {
-        const double q = (A[0][0] + A[1][1] + A[2][2]) / 3;
-        const double p1 =
-          A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2];
-        const double p2 = (A[0][0] - q) * (A[0][0] - q) +
-                          (A[1][1] - q) * (A[1][1] - q) +
-                          (A[2][2] - q) * (A[2][2] - q) + 2 * p1;
-        const double p = std::sqrt(p2 / 6);
+        const auto   c = closed_form(A);
+        const double q = c.q, p = c.p, phi = c.phi;
         const double scale =
           std::max({std::abs(A[0][0]), std::abs(A[1][1]), std::abs(A[2][2])});
         if (!(p > 1e-6 * scale))
           return eigen_3x3(A, values, V);
-        const double r =
-          ((A[0][0] - q) * ((A[1][1] - q) * (A[2][2] - q) - A[1][2] * A[1][2]) -
-           A[0][1] * (A[0][1] * (A[2][2] - q) - A[1][2] * A[0][2]) +
-           A[0][2] * (A[0][1] * A[1][2] - (A[1][1] - q) * A[0][2])) /
-          (2 * p * p * p);
-        const double phi = std::acos(std::clamp(r, -1., 1.)) / 3;
-        values[0]        = q + 2 * p * std::cos(phi);
-        values[2]        = q + 2 * p * std::cos(phi + 2 * M_PI / 3);
-        values[1]        = 3 * q - values[0] - values[2];
+        values[0] = q + 2 * p * std::cos(phi);
+        values[2] = q + 2 * p * std::cos(phi + 2 * M_PI / 3);
+        values[1] = 3 * q - values[0] - values[2];
         if (!(values[0] - values[1] > 1e-6 * p &&
               values[1] - values[2] > 1e-6 * p))
           return eigen_3x3(A, values, V);
@@ -419,21 +414,9 @@ namespace psmpm
           double A[n_modes][n_modes] = {};
           project(0, A);
           bool weighted = false;
-          if (has_eigenvalue_below(A[0][0],
-                                   A[1][1],
-                                   A[2][2],
-                                   A[0][1],
-                                   A[0][2],
-                                   A[1][2],
-                                   target * rho))
+          if (has_eigenvalue_below(A, target * rho))
             {
-              const double lambda = smallest_eigenvalue(A[0][0],
-                                                        A[1][1],
-                                                        A[2][2],
-                                                        A[0][1],
-                                                        A[0][2],
-                                                        A[1][2]) /
-                                    rho;
+              const double lambda = smallest_eigenvalue(A) / rho;
               // Lift the smallest to the target (Q^T S_c Q = I).
               weighted = lambda < target;
               if (weighted)
@@ -447,13 +430,7 @@ namespace psmpm
           // particle mass.
           double B[n_modes][n_modes] = {};
           project(n_modes, B);
-          if (has_eigenvalue_below(B[0][0],
-                                   B[1][1],
-                                   B[2][2],
-                                   B[0][1],
-                                   B[0][2],
-                                   B[1][2],
-                                   target * rho))
+          if (has_eigenvalue_below(B, target * rho))
             {
               for (unsigned int r = 0; r < n_modes; ++r)
                 for (unsigned int s = 0; s < r; ++s)
