@@ -6,9 +6,12 @@ meshes of 2 and 8 blocks with 1 x 1 ... 16 x 14 particles per block, at
 dt = 1e-3 and at the automatic time step (Time step = 0), and counts the
 runs that end unstable (doc/stability.md, "Sparse particle layouts").
 
-    [TARGETS="0 0.5 1"] /usr/bin/python3 contrib/sparse_layouts.py \
-        [build/psmpm] [work dir]
-Writes sparse_layouts.tsv (one row per run) into the work directory."""
+    [TARGETS="0 0.5 1"] [BASELINE=old/sparse_layouts.tsv] \
+        /usr/bin/python3 contrib/sparse_layouts.py [build/psmpm] [work dir]
+Writes sparse_layouts.tsv (one row per run) into the work directory. With
+BASELINE (the tsv of an earlier binary), also prints per target the
+geometric mean of E_u / E_u(baseline) over the runs at dt = 1e-3 that
+completed in both, and the runs more than 2x worse."""
 import json, os, subprocess, sys, tempfile
 
 here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -56,3 +59,25 @@ for r in rows:
 print("unstable at the automatic step, last target:",
       ", ".join("%s %d %s" % (r[1], r[2], r[3]) for r in rows
                 if r[0] == targets[-1] and r[4] == "0" and r[5] != "completed"))
+baseline = os.environ.get("BASELINE")
+if baseline:
+    old = {}
+    for line in open(baseline).read().split("\n")[1:]:
+        f = line.split("\t")
+        if len(f) == 8:
+            old[(f[0], f[1], f[2], f[3], f[4])] = (f[5], float(f[6]))
+    import math
+    for t in targets:
+        logs, worse = [], []
+        for r in rows:
+            key = (r[0], r[1], str(r[2]), r[3], r[4])
+            if r[0] != t or r[4] != "1e-3" or key not in old:
+                continue
+            status, e_old = old[key]
+            if status == "completed" and r[5] == "completed" and e_old > 0:
+                logs.append(math.log(r[6] / e_old))
+                if r[6] > 2 * e_old:
+                    worse.append("%s %d %s %.2e -> %.2e" % (r[1], r[2], r[3], e_old, r[6]))
+        if logs:
+            print("target %s against the baseline: geometric mean of E_u ratio %.3f over %d runs; > 2x: %s"
+                  % (t, math.exp(sum(logs) / len(logs)), len(logs), "; ".join(worse) or "none"))
