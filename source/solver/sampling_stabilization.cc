@@ -177,8 +177,19 @@ namespace psmpm
           }
       }
 
+      /// Scratch space of modes_of(), kept across the cells of reinit():
+      /// allocated at the first cell and reused (FullMatrix and Vector
+      /// keep their memory when reinitialised to the same size).
+      struct ModesScratch
+      {
+        FullMatrix<double>        W, rows, RT, L, LT, X;
+        Vector<double>            column, y, x, x_row, q_row;
+        std::vector<unsigned int> pivots;
+        std::vector<bool>         used;
+      };
+
       /// An E-orthonormal basis of the modes that S acts on, as the
-      /// columns of an n x n_modes matrix (@p name names them in the
+      /// columns of the n x n_modes matrix @p Q (@p name names them in the
       /// error). E is the cell's exact mass matrix and S = E P, P the
       /// E-orthogonal projection onto the modes (I - P_2 for the
       /// non-polynomial modes, P_2 - P_1 for the quadratic ones), so
@@ -189,18 +200,24 @@ namespace psmpm
       /// Q^T E Q = I. Three solves with E and a 3 x 3 triangle, where a
       /// symmetric eigensolver (LAPACK, before stop 33) cost three
       /// quarters of the set-up's instructions.
-      FullMatrix<double>
+      void
       modes_of(const FullMatrix<double> &E,
                const FullMatrix<double> &S,
                const unsigned int        n_modes,
                const unsigned int        cell,
-               const std::string        &name)
+               const std::string        &name,
+               ModesScratch             &scratch,
+               FullMatrix<double>       &Q)
       {
         const unsigned int n = E.m();
-        // Pivoted Cholesky of S: W holds the Schur complement.
-        FullMatrix<double>        W(S), R(n_modes, n_modes);
-        std::vector<unsigned int> pivots;
-        double                    largest = 0;
+        // Pivoted Cholesky of S: W holds the Schur complement, the rows
+        // of R (below) are the rows of `rows`.
+        auto &W = scratch.W, &rows = scratch.rows;
+        W = S;
+        rows.reinit(n_modes, n);
+        auto &pivots = scratch.pivots;
+        pivots.clear();
+        double largest = 0;
         for (unsigned int k = 0; k < n; ++k)
           largest = std::max(largest, S(k, k));
         const double tolerance = 1e-8 * largest;
@@ -210,8 +227,8 @@ namespace psmpm
                             " modes, expected " + std::to_string(n_modes) +
                             ".");
         };
-        std::vector<bool>                used(n, false);
-        std::vector<std::vector<double>> rows;
+        auto &used = scratch.used;
+        used.assign(n, false);
         for (unsigned int r = 0; r <= n_modes; ++r)
           {
             unsigned int j = n;
@@ -228,29 +245,33 @@ namespace psmpm
             AssertThrow(d > tolerance, error("fewer"));
             used[j] = true;
             pivots.push_back(j);
-            const double        root = std::sqrt(d);
-            std::vector<double> row(n);
+            const double root = std::sqrt(d);
             for (unsigned int k = 0; k < n; ++k)
-              row[k] = W(j, k) / root;
+              rows(r, k) = W(j, k) / root;
             for (unsigned int k = 0; k < n; ++k)
               for (unsigned int l = 0; l < n; ++l)
-                W(k, l) -= row[k] * row[l];
-            rows.push_back(row);
+                W(k, l) -= rows(r, k) * rows(r, l);
           }
         // R(r, q) = row_r[p_q] gives S_pp = R^T R; it is upper
         // triangular, since a pivot's row and column of W vanish after
         // its step. Stored transposed: Q = X_p R^-1 is, row by row, a
         // forward substitution with R^T.
-        FullMatrix<double> RT(n_modes, n_modes);
+        auto &RT = scratch.RT;
+        RT.reinit(n_modes, n_modes);
         for (unsigned int r = 0; r < n_modes; ++r)
           for (unsigned int q = 0; q < n_modes; ++q)
-            RT(q, r) = rows[r][pivots[q]];
+            RT(q, r) = rows(r, pivots[q]);
 
         // X_p = E^-1 S_:p, with E = L L^T.
-        FullMatrix<double> L(n, n), LT(n, n), X(n, n_modes);
+        auto &L = scratch.L, &LT = scratch.LT, &X = scratch.X;
         L.cholesky(E);
+        LT.reinit(n, n);
         LT.copy_transposed(L);
-        Vector<double> column(n), y(n), x(n);
+        X.reinit(n, n_modes);
+        auto &column = scratch.column, &y = scratch.y, &x = scratch.x;
+        column.reinit(n);
+        y.reinit(n);
+        x.reinit(n);
         for (unsigned int q = 0; q < n_modes; ++q)
           {
             for (unsigned int k = 0; k < n; ++k)
@@ -260,8 +281,10 @@ namespace psmpm
             for (unsigned int k = 0; k < n; ++k)
               X(k, q) = x(k);
           }
-        FullMatrix<double> Q(n, n_modes);
-        Vector<double>     x_row(n_modes), q_row(n_modes);
+        Q.reinit(n, n_modes);
+        auto &x_row = scratch.x_row, &q_row = scratch.q_row;
+        x_row.reinit(n_modes);
+        q_row.reinit(n_modes);
         for (unsigned int k = 0; k < n; ++k)
           {
             for (unsigned int q = 0; q < n_modes; ++q)
@@ -270,7 +293,6 @@ namespace psmpm
             for (unsigned int q = 0; q < n_modes; ++q)
               Q(k, q) = q_row(q);
           }
-        return Q;
       }
     } // namespace
 
@@ -313,6 +335,8 @@ namespace psmpm
       quadratic_factor.resize(owned.size() * n * n_modes);
       basis.resize(owned.size() * n * 2 * n_modes);
       inverse_measure.resize(owned.size());
+      ModesScratch       scratch;
+      FullMatrix<double> Q, Q_q, EQ_q;
       // owned_cells() lists the owned cells in active cell order.
       unsigned int i = 0;
       for (const auto &cell : dh.active_cell_iterators())
@@ -340,12 +364,10 @@ namespace psmpm
               for (unsigned int l = 0; l < n; ++l)
                 complement[(i * n + k) * n + l] = S(k, l);
             inverse_measure[i] = 1. / cell->measure();
-            const FullMatrix<double> Q =
-              modes_of(E, S, n_modes, c, "non-polynomial");
-            const FullMatrix<double> Q_q =
-              modes_of(E, S_q, n_modes, c, "quadratic");
+            modes_of(E, S, n_modes, c, "non-polynomial", scratch, Q);
+            modes_of(E, S_q, n_modes, c, "quadratic", scratch, Q_q);
             // S_q = E Q_q Q_q^T E: its factor E Q_q is a third of S_q.
-            FullMatrix<double> EQ_q(n, n_modes);
+            EQ_q.reinit(n, n_modes);
             E.mmult(EQ_q, Q_q);
             for (unsigned int k = 0; k < n; ++k)
               for (unsigned int r = 0; r < n_modes; ++r)
