@@ -173,8 +173,13 @@ namespace psmpm
         "Together they keep the matrix definite when a sparse particle "
         "layout leaves fields that vanish at every particle "
         "(doc/stability.md, \"Sparse particle layouts\"). Powell-Sabin "
-        "and quadratic tensor B-splines; "
-        "no effect on P1. A number >= 0 (0: off) or automatic: 0.5 with "
+        "and quadratic tensor B-splines. On P1 with Type = ghost penalty "
+        "the same t caps each cell's fill at lambda / t (lambda: the "
+        "smallest eigenvalue of the cell's particle mass relative to the "
+        "exact one), so a cell whose particles leave a linear field unseen "
+        "(one particle, particles on a line) gets the penalty of a partly "
+        "filled cell (doc/stability.md, \"Sampling of P1 cells\"). "
+        "A number >= 0 (0: off) or automatic: 0.5 with "
         "Type = automatic on a grid that does not move, 0 otherwise.");
       prm.declare_entry("Stabilization",
                         "1",

@@ -349,12 +349,17 @@ namespace psmpm
         return space;
       }
 
-      /// The sampling stabilisation's target where it acts on this space
-      /// and strategy, else 0 (summary.json).
+      /// The sampling target where it acts on this space and strategy (the
+      /// sampling stabilisation; the ghost penalty's sampled fill on P1),
+      /// else 0 (summary.json).
       double
       sampling_target() const
       {
-        return sampling.acts_on(*this) ? parameters.sampling_stabilization : 0.;
+        const bool p1_ghost_penalty =
+          parameters.type == "ghost penalty" && dofs_per_cell == dim + 1;
+        return sampling.acts_on(*this) || p1_ghost_penalty ?
+                 parameters.sampling_stabilization :
+                 0.;
       }
       const DoFHandler<dim> &
       get_dof_handler() const

@@ -9,6 +9,7 @@
 #include <psmpm/solver/mass_strategies/cell_fill.h>
 #include <psmpm/solver/mass_strategy.h>
 #include <psmpm/solver/polynomial_complement.h>
+#include <psmpm/solver/symmetric_3x3.h>
 
 #include <cmath>
 #include <set>
@@ -20,6 +21,71 @@ namespace psmpm
     namespace
     {
       /**
+       * The fill of each owned P1 cell that holds particles, capped at
+       * lambda / @p target: lambda the smallest eigenvalue of the cell's
+       * particle mass block relative to its exact one, E^-1/2 M_c E^-1/2 /
+       * rho, E = |c| / ((d + 1)(d + 2)) (I + 1 1^T). A cell's particles can
+       * fill it by volume and still leave a linear field unseen: one
+       * particle (rank one), or particles on a line, which is where the
+       * particles of a block with 2 x 2 of them sit on a criss-cross mesh.
+       * Counted as filled, such a cell got no ghost penalty, its functions
+       * were free, and free bodies with 2 x 2 or 3 x 2 particles per block
+       * blew up within a few steps at any time step (doc/stability.md,
+       * "Sampling of P1 cells"). The penalty is zero on affine fields, so
+       * a rigid rotation is still reproduced exactly. Well sampled cells
+       * keep their fill (lambda >= t fill: 8 x 8 and 16 x 14 particles per
+       * block). Only with P1 (3
+       * functions: the closed-form eigenvalues; Powell-Sabin has the
+       * sampling stabilisation) and @p target > 0 (Mass matrix/Sampling
+       * stabilization, 0.5 with Type = automatic).
+       */
+      template <int dim>
+      void
+      cap_fill_by_sampling(const GridSystem<dim>     &grid,
+                           const std::vector<double> &measure,
+                           const double               target,
+                           double                    *fill)
+      {
+        constexpr unsigned int n    = dim + 1;
+        const auto            &mass = grid.cell_arrays().mass;
+        const double           rho  = grid.reference_density();
+        if (!(target > 0) || !(rho > 0) || grid.dofs_per_cell != n ||
+            mass.empty())
+          return;
+        // E^-1/2 = k^-1/2 (I + alpha 1 1^T): (I + alpha 1 1^T)^2 must be
+        // (I + 1 1^T)^-1 = I - 1 1^T / (n + 1).
+        const double alpha = (-1. + std::sqrt(1. / (n + 1))) / n;
+        for (const unsigned int c : grid.owned_cells())
+          {
+            if (!(fill[c] > 0))
+              continue;
+            const double *M = &mass[c * n * n];
+            // W M W with W = I + alpha 1 1^T: M + alpha (r 1^T + 1 r^T)
+            // + alpha^2 s 1 1^T, r the row sums, s their sum.
+            double r[n] = {}, sum = 0;
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                for (unsigned int l = 0; l < n; ++l)
+                  r[k] += M[k * n + l];
+                sum += r[k];
+              }
+            const double scale   = n * (n + 1) / (measure[c] * rho);
+            double       A[3][3] = {};
+            for (unsigned int k = 0; k < n; ++k)
+              for (unsigned int l = 0; l < n; ++l)
+                A[k][l] = scale * (M[k * n + l] + alpha * (r[k] + r[l]) +
+                                   alpha * alpha * sum);
+            const double lambda =
+              n == 3 ?
+                smallest_eigenvalue(A) :
+                0.5 * (A[0][0] + A[1][1]) -
+                  std::sqrt(0.25 * (A[0][0] - A[1][1]) * (A[0][0] - A[1][1]) +
+                            A[0][1] * A[0][1]);
+            fill[c] = std::min(fill[c], std::max(lambda, 0.) / target);
+          }
+      }
+
+      /**
        * Volume ghost penalty (local projection stabilisation, Burman) of
        * the particle mass matrix: for every pair of cells c, K that share
        * a vertex, both holding particles and one not filled,
@@ -30,7 +96,9 @@ namespace psmpm
        * P the L2 projection onto the polynomials of the space's degree on
        * the pair c u K, for pairs of which both cells hold particles
        * (gamma: Mass matrix/Stabilization; fill: particle
-       * mass over rho |cell|, clipped to [0, 1]). S vanishes for every
+       * mass over rho |cell|, clipped to [0, 1], on P1 with a sampling
+       * target capped by the particles' sampling of the cell:
+       * cap_fill_by_sampling()). S vanishes for every
        * polynomial of that degree (the space reproduces them), so
        *  - constants: row sums, hence momentum, are those of the particle
        *    matrix;
@@ -73,21 +141,29 @@ namespace psmpm
             return false;
           if (faces.empty())
             compute_pair_patches(grid);
-          std::vector<double> fill = cell_fill(grid, measure);
-          {
-            std::vector<double> all(fill.size());
-            Utilities::MPI::max(fill, grid.get_communicator(), all);
-            fill.swap(all);
-          }
-          const auto       &active = grid.lumped_mass();
-          const double      rho    = grid.reference_density();
-          auto             &blocks = grid.patch_blocks();
+          // fill decides which cells hold particles, sampled (fill capped
+          // by the particles' sampling of the linear fields) the weights:
+          // both in one reduction.
+          const std::vector<double> own = cell_fill(grid, measure);
+          const unsigned int        n_c = own.size();
+          std::vector<double>       local(2 * n_c), fill(2 * n_c);
+          std::copy(own.begin(), own.end(), local.begin());
+          std::copy(own.begin(), own.end(), local.begin() + n_c);
+          cap_fill_by_sampling(grid,
+                               measure,
+                               grid.parameters.sampling_stabilization,
+                               local.data() + n_c);
+          Utilities::MPI::max(local, grid.get_communicator(), fill);
+          const double     *sampled = fill.data() + n_c;
+          const auto       &active  = grid.lumped_mass();
+          const double      rho     = grid.reference_density();
+          auto             &blocks  = grid.patch_blocks();
           std::vector<bool> treated(active.size(), false);
           for (auto &f : faces)
             {
               const double w =
                 gamma * rho *
-                (1. - std::min(fill[f.cells[0]], fill[f.cells[1]]));
+                (1. - std::min(sampled[f.cells[0]], sampled[f.cells[1]]));
               if (!(w > 0))
                 continue;
               // Both cells hold particles: the pair's polynomial is fixed
