@@ -541,6 +541,7 @@ end
               AssertThrow(mesh.type != Mesh::MeshGenerator<2>::Type::cartesian,
                           ExcMessage("Mesh/Type = cartesian: Problem = l2 "
                                      "projection runs on triangles only."));
+              projection.check_scene(mesh, basis);
             }
         }
       catch (const std::bad_alloc &)

@@ -168,6 +168,40 @@ namespace psmpm
     }
 
     void
+    L2Projection::check_basis_function(const Triangulation<2> &tria,
+                                       const Basis::Space<2>  &space,
+                                       const std::string      &basis_name) const
+    {
+      if (output_basis_vertex == numbers::invalid_unsigned_int)
+        return;
+      const unsigned int per_vertex = space.dof_layout().n_dofs_per_vertex();
+      AssertThrow(output_basis_vertex < tria.n_vertices() &&
+                    tria.get_used_vertices()[output_basis_vertex] &&
+                    output_basis_function < per_vertex,
+                  ExcMessage("Output/Basis function = '" +
+                             std::to_string(output_basis_vertex) + ", " +
+                             std::to_string(output_basis_function) +
+                             "': the mesh has vertices 0.." +
+                             std::to_string(tria.n_vertices() - 1) +
+                             " and the " + basis_name + " basis has " +
+                             std::to_string(per_vertex) +
+                             " function(s) per vertex."));
+    }
+
+    void
+    L2Projection::check_scene(const Mesh::MeshGenerator<2> &mesh,
+                              const std::string            &basis_name) const
+    {
+      if (output_basis_vertex == numbers::invalid_unsigned_int)
+        return;
+      Triangulation<2> tria;
+      mesh.create(tria);
+      check_basis_function(tria,
+                           *Basis::create_space<2>(basis_name),
+                           basis_name);
+    }
+
+    void
     L2Projection::run(const Mesh::MeshGenerator<2> &mesh,
                       const std::string            &basis_name,
                       const std::string            &output_directory,
@@ -289,19 +323,7 @@ namespace psmpm
       types::global_dof_index basis_dof = numbers::invalid_dof_index;
       if (output_basis_vertex != numbers::invalid_unsigned_int)
         {
-          const unsigned int per_vertex =
-            space->dof_layout().n_dofs_per_vertex();
-          AssertThrow(output_basis_vertex < tria.n_vertices() &&
-                        tria.get_used_vertices()[output_basis_vertex] &&
-                        output_basis_function < per_vertex,
-                      ExcMessage("Output/Basis function = '" +
-                                 std::to_string(output_basis_vertex) + ", " +
-                                 std::to_string(output_basis_function) +
-                                 "': the mesh has vertices 0.." +
-                                 std::to_string(tria.n_vertices() - 1) +
-                                 " and the " + basis_name + " basis has " +
-                                 std::to_string(per_vertex) +
-                                 " function(s) per vertex."));
+          check_basis_function(tria, *space, basis_name);
           for (const auto &cell : dof_handler.active_cell_iterators())
             for (unsigned int k = 0; k < 3; ++k)
               if (cell->vertex_index(k) == output_basis_vertex)

@@ -109,6 +109,13 @@ main(int argc, char **argv)
                               "subsection Mesh\n set Type = cartesian\nend\n",
               {},
               {"Mesh/Type = cartesian", "case.prm"}},
+             {"L2 projection basis function beyond the mesh",
+              head + "set Problem = l2 projection\n"
+                              "subsection Mesh\n set Blocks x = 1\n"
+                              " set Blocks y = 1\nend\n"
+                              "subsection Output\n set Basis function = 12, 0\nend\n",
+              {},
+              {"Output/Basis function", "12, 0", "case.prm"}},
              {"Taylor least squares on rectangles",
               head +
                 "subsection Mesh\n set Type = cartesian\nend\n"

@@ -45,6 +45,15 @@ namespace psmpm
       void
       parse_parameters(ParameterHandler &prm);
 
+      /// The checks of the scene that need its mesh (Output/Basis
+      /// function within the mesh's vertices and the basis' functions per
+      /// vertex), before any output is written: bad input is reported as
+      /// such (exit 2), not as an internal error after the output
+      /// directory was set up.
+      void
+      check_scene(const Mesh::MeshGenerator<2> &mesh,
+                  const std::string            &basis_name) const;
+
       /**
        * Create the mesh, project, fill @p summary (errors.L2, n_dofs,
        * n_cells, h = the largest cell diameter) and write projection.vtu
@@ -58,6 +67,13 @@ namespace psmpm
           const std::string            &output_directory,
           Postprocess::Summary         &summary,
           MPI_Comm                      comm);
+
+      /// Throws ExcMessage naming Output/Basis function if it is not a
+      /// function of @p space on @p tria.
+      void
+      check_basis_function(const Triangulation<2> &tria,
+                           const Basis::Space<2>  &space,
+                           const std::string      &basis_name) const;
 
       /// "sin(pi*x)*sin(pi*y)" by default; variables x, y; constant pi.
       std::string function_expression = "sin(pi*x)*sin(pi*y)";
