@@ -19,27 +19,6 @@ namespace psmpm
   {
     namespace
     {
-      /// Whether the symmetric 3 x 3 matrix @p A (upper triangle read)
-      /// has an eigenvalue below @p s: A - s I is
-      /// not positive definite (its LDL^T factorization). A screen that
-      /// spares the well-sampled cells smallest_eigenvalue()'s acos and
-      /// cos.
-      bool
-      has_eigenvalue_below(const double (&A)[3][3], const double s)
-      {
-        const double a00 = A[0][0], a11 = A[1][1], a22 = A[2][2], a01 = A[0][1],
-                     a02 = A[0][2], a12 = A[1][2];
-        const double d0 = a00 - s;
-        if (!(d0 > 0))
-          return true;
-        const double l10 = a01 / d0, l20 = a02 / d0;
-        const double d1 = a11 - s - l10 * a01;
-        if (!(d1 > 0))
-          return true;
-        const double l21 = (a12 - l20 * a01) / d1;
-        return !(a22 - s - l20 * a02 - l21 * l21 * d1 > 0);
-      }
-
       /// Eigenvalues @p values and eigenvectors (the columns of @p V) of
       /// the symmetric 3 x 3 matrix @p A, by cyclic Jacobi rotations to
       /// round-off (repeated and zero eigenvalues alike; no allocation).

@@ -20,6 +20,17 @@ namespace psmpm
   {
     namespace
     {
+      /// Whether cap_fill_by_sampling() acts: P1 (its closed form), a
+      /// target, a density and the particle mass blocks.
+      template <int dim>
+      bool
+      caps_fill(const GridSystem<dim> &grid, const double target)
+      {
+        return target > 0 && grid.reference_density() > 0 &&
+               grid.dofs_per_cell == dim + 1 &&
+               !grid.cell_arrays().mass.empty();
+      }
+
       /**
        * The fill of each owned P1 cell that holds particles, capped at
        * lambda / @p target: lambda the smallest eigenvalue of the cell's
@@ -49,9 +60,7 @@ namespace psmpm
         constexpr unsigned int n    = dim + 1;
         const auto            &mass = grid.cell_arrays().mass;
         const double           rho  = grid.reference_density();
-        if (!(target > 0) || !(rho > 0) || grid.dofs_per_cell != n ||
-            mass.empty())
-          return;
+        Assert(caps_fill(grid, target), ExcInternalError());
         // E^-1/2 = k^-1/2 (I + alpha 1 1^T): (I + alpha 1 1^T)^2 must be
         // (I + 1 1^T)^-1 = I - 1 1^T / (n + 1).
         const double alpha = (-1. + std::sqrt(1. / (n + 1))) / n;
@@ -75,6 +84,10 @@ namespace psmpm
               for (unsigned int l = 0; l < n; ++l)
                 A[k][l] = scale * (M[k * n + l] + alpha * (r[k] + r[l]) +
                                    alpha * alpha * sum);
+            // Only lambda < t fill lowers the fill: the LDL^T screen spares
+            // the well-sampled cells the closed form's acos and cos.
+            if (n == 3 && !has_eigenvalue_below(A, target * fill[c]))
+              continue;
             const double lambda =
               n == 3 ?
                 smallest_eigenvalue(A) :
@@ -142,19 +155,23 @@ namespace psmpm
           if (faces.empty())
             compute_pair_patches(grid);
           // fill decides which cells hold particles, sampled (fill capped
-          // by the particles' sampling of the linear fields) the weights:
-          // both in one reduction.
-          const std::vector<double> own = cell_fill(grid, measure);
-          const unsigned int        n_c = own.size();
-          std::vector<double>       local(2 * n_c), fill(2 * n_c);
-          std::copy(own.begin(), own.end(), local.begin());
-          std::copy(own.begin(), own.end(), local.begin() + n_c);
-          cap_fill_by_sampling(grid,
-                               measure,
-                               grid.parameters.sampling_stabilization,
-                               local.data() + n_c);
+          // by the particles' sampling of the linear fields, where
+          // caps_fill()) the weights: both in one reduction.
+          const double        target = grid.parameters.sampling_stabilization;
+          std::vector<double> local  = cell_fill(grid, measure);
+          const unsigned int  n_c    = local.size();
+          const bool          cap    = caps_fill(grid, target);
+          if (cap)
+            {
+              local.resize(2 * n_c);
+              std::copy(local.begin(),
+                        local.begin() + n_c,
+                        local.begin() + n_c);
+              cap_fill_by_sampling(grid, measure, target, local.data() + n_c);
+            }
+          std::vector<double> fill(local.size());
           Utilities::MPI::max(local, grid.get_communicator(), fill);
-          const double     *sampled = fill.data() + n_c;
+          const double     *sampled = fill.data() + (cap ? n_c : 0);
           const auto       &active  = grid.lumped_mass();
           const double      rho     = grid.reference_density();
           auto             &blocks  = grid.patch_blocks();
