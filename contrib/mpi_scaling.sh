@@ -11,10 +11,15 @@
 # seconds of that run (user + sys of all processes, /usr/bin/time around
 # mpirun) and the final checkpoint's wall time on rank 0.
 #
-#   bash contrib/mpi_scaling.sh [psmpm binary]
+#   bash contrib/mpi_scaling.sh [psmpm binary [psmpm options...]]
+# e.g. the distributed mesh (P1 only):
+#   BASES="linear:lumped" RANKS="1 2" bash contrib/mpi_scaling.sh \
+#     build/psmpm --set "Mesh/Distribution=distributed"
+#   environment: BASES ("linear:lumped powell-sabin:automatic")
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-build/psmpm}
+shift || true
 steps=${STEPS:-100}
 repeats=${REPEATS:-2}
 ranks_list=${RANKS:-1 2 3 4}
@@ -23,8 +28,9 @@ end_time=$(/usr/bin/python3 -c "print($steps * 1e-5)")
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 echo "| basis, mass | ranks | loop wall s | speed-up | CPU s (user + sys) | checkpoint s |"
 echo "|---|---|---|---|---|---|"
-for basis in "linear lumped" "powell-sabin automatic"; do
-  set -- $basis
+for basis in ${BASES:-linear:lumped powell-sabin:automatic}; do
+  b=${basis%%:*}
+  m=${basis##*:}
   one=
   for ranks in $ranks_list; do
     extra=()
@@ -37,10 +43,10 @@ for basis in "linear lumped" "powell-sabin automatic"; do
     for _ in $(seq "$repeats"); do
       dir=$(mktemp -d)
       /usr/bin/time -f "%U %S" -o "$dir.time" mpirun "${extra[@]}" -np "$ranks" \
-        "$bin" prm/benchmark_throughput.prm --set "Basis/Type=$1" \
-        --set "Mass matrix/Type=$2" --set "Particles/Per block x=14" \
+        "$bin" prm/benchmark_throughput.prm --set "Basis/Type=$b" \
+        --set "Mass matrix/Type=$m" --set "Particles/Per block x=14" \
         --set "Particles/Per block y=14" --set "Time/End time=$end_time" \
-        --set "Output directory=$dir" > /dev/null
+        --set "Output directory=$dir" "$@" > /dev/null
       row=$(/usr/bin/python3 -c "
 import json, sys
 j = json.load(open(sys.argv[1]))
@@ -55,6 +61,6 @@ print(j['time_loop_s'], '%.2f' % (u + s), '%.2f' % j['timers_s']['checkpoint'])
     read -r loop cpu checkpoint <<< "$best"
     [ -z "$one" ] && one=$loop
     speedup=$(/usr/bin/python3 -c "print('%.2f' % ($one / $loop))")
-    printf "| %s, %s | %d%s | %.2f | %s | %s | %s |\n" "$1" "$2" "$ranks" "$mark" "$loop" "$speedup" "$cpu" "$checkpoint"
+    printf "| %s, %s | %d%s | %.2f | %s | %s | %s |\n" "$b" "$m" "$ranks" "$mark" "$loop" "$speedup" "$cpu" "$checkpoint"
   done
 done

@@ -541,6 +541,10 @@ end
               AssertThrow(mesh.type != Mesh::MeshGenerator<2>::Type::cartesian,
                           ExcMessage("Mesh/Type = cartesian: Problem = l2 "
                                      "projection runs on triangles only."));
+              AssertThrow(!mesh.distributed,
+                          ExcMessage("Mesh/Distribution = distributed: "
+                                     "Problem = l2 projection runs on a "
+                                     "serial mesh (use replicated)."));
               projection.check_scene(mesh, basis);
             }
         }

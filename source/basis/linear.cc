@@ -156,6 +156,8 @@ namespace psmpm
           for (const auto f : cell->face_indices())
             {
               const auto face = cell->face(f);
+              // (Mesh::rim_boundary_id, the outer faces of a distributed
+              // mesh's ghost layer, is never among the fixed ids.)
               if (!face->at_boundary() || ids.count(face->boundary_id()) == 0)
                 continue;
               for (unsigned int v = 0; v < face->n_vertices(); ++v)

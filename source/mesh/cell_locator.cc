@@ -1,6 +1,9 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria_base.h>
+
 #include <psmpm/mesh/cell_locator.h>
 
 #include <algorithm>
@@ -38,6 +41,11 @@ namespace psmpm
         set_up_cartesian(tria);
       else
         set_up_search(set_up_cells(tria));
+      // A distributed mesh: each rank sees its part (the same answer on a
+      // replicated one).
+      if (const auto *par =
+            dynamic_cast<const parallel::TriangulationBase<dim> *>(&tria))
+        min_height = Utilities::MPI::min(min_height, par->get_communicator());
     }
 
     template <int dim>

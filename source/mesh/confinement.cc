@@ -1,6 +1,9 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria_base.h>
+
 #include <psmpm/mesh/confinement.h>
 
 #include <cmath>
@@ -38,19 +41,27 @@ namespace psmpm
     is_closed(const Triangulation<dim>                            &tria,
               const std::array<std::set<types::boundary_id>, dim> &fixed)
     {
-      // parallel::shared: every rank holds every cell, so every rank
-      // gives the same answer without communication.
+      // Each rank looks at the boundary faces of its own cells (on a
+      // distributed mesh it holds no others beyond its ghost layer, whose
+      // outer faces are no boundary), and all ranks agree.
+      const auto *par =
+        dynamic_cast<const parallel::TriangulationBase<dim> *>(&tria);
+      bool closed = true;
       for (const auto &cell : tria.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f))
-            {
-              const auto           id = cell->face(f)->boundary_id();
-              const Tensor<1, dim> n  = face_normal(cell, f);
-              for (unsigned int d = 0; d < dim; ++d)
-                if (fixed[d].count(id) == 0 && std::abs(n[d]) > 1e-10)
-                  return false;
-            }
-      return true;
+        if (par == nullptr || cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              {
+                const auto           id = cell->face(f)->boundary_id();
+                const Tensor<1, dim> n  = face_normal(cell, f);
+                for (unsigned int d = 0; d < dim; ++d)
+                  closed = closed &&
+                           !(fixed[d].count(id) == 0 && std::abs(n[d]) > 1e-10);
+              }
+      if (par != nullptr)
+        closed =
+          Utilities::MPI::min(closed ? 1U : 0U, par->get_communicator()) == 1;
+      return closed;
     }
 
     template bool

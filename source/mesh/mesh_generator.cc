@@ -56,6 +56,19 @@ namespace psmpm
                           Patterns::Anything(),
                           "Gmsh .msh file (Type = gmsh); relative paths are "
                           "taken relative to the parameter file.");
+        prm.declare_entry(
+          "Distribution",
+          "replicated",
+          Patterns::Selection("replicated|distributed"),
+          "With several MPI ranks: replicated: every rank holds the whole "
+          "mesh (parallel::shared); distributed: a rank holds its own cells "
+          "and the cells sharing a vertex with one "
+          "(parallel::fullydistributed): memory per rank follows the rank's "
+          "share of the mesh. Rank 0 builds the whole mesh once and sends "
+          "the parts. Verified with Basis/Type = linear, Transfer/"
+          "Reconstruction = particles and the transfers on a fixed grid; "
+          "particles move at most into a neighbouring rank's cells per "
+          "step (the Courant number keeps them within a cell).");
       }
       prm.leave_subsection();
     }
@@ -77,7 +90,11 @@ namespace psmpm
       blocks_x            = prm.get_integer("Blocks x");
       blocks_y            = prm.get_integer("Blocks y");
       file                = prm.get("File");
+      distributed         = prm.get("Distribution") == "distributed";
       prm.leave_subsection();
+      AssertThrow(!distributed || dim == 2,
+                  ExcMessage("Mesh/Distribution = distributed needs "
+                             "Geometry/Dimension = 2."));
 
       if constexpr (dim == 1)
         {

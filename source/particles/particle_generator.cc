@@ -1,11 +1,15 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <psmpm/base/format.h>
 #include <psmpm/particles/particle_generator.h>
 
+#include <boost/serialization/string.hpp>
 #include <cmath>
 
 namespace psmpm
@@ -24,6 +28,7 @@ namespace psmpm
                      const std::vector<double>               &density,
                      const std::function<bool(unsigned int)> &is_owned,
                      const Classify                          &classify,
+                     const bool                               partial,
                      ParticleSet<1>                          &particles)
       {
         const unsigned int n      = generator.per_block_x;
@@ -40,6 +45,8 @@ namespace psmpm
               if (body < 0)
                 continue;
               const unsigned int c = locator.locate(x, hint);
+              if (c == Mesh::CellLocator<1>::invalid && partial)
+                continue; // in a part of the mesh this rank does not hold
               AssertThrow(c != Mesh::CellLocator<1>::invalid,
                           ExcInternalError());
               hint = c;
@@ -58,6 +65,7 @@ namespace psmpm
                       const std::vector<double>               &density,
                       const std::function<bool(unsigned int)> &is_owned,
                       const Classify                          &classify,
+                      const bool                               partial,
                       ParticleSet<2>                          &particles)
       {
         const unsigned int per_block_x = generator.per_block_x;
@@ -78,6 +86,8 @@ namespace psmpm
                   if (body < 0)
                     continue;
                   const unsigned int c = locator.locate(x, hint);
+                  if (c == Mesh::CellLocator<2>::invalid && partial)
+                    continue; // in a part of the mesh this rank does not hold
                   AssertThrow(c != Mesh::CellLocator<2>::invalid,
                               ExcInternalError());
                   hint = c;
@@ -98,7 +108,7 @@ namespace psmpm
                         ParticleSet<2>                          &particles)
       {
         const unsigned int k     = generator.per_cell;
-        const double       total = double(tria.n_active_cells()) * k * k;
+        const double       total = double(tria.n_global_active_cells()) * k * k;
         AssertThrow(total <= generator.max_particles,
                     ExcMessage("Particles/Per cell: " + std::to_string(total) +
                                " particles exceed Particles/Maximum "
@@ -111,7 +121,11 @@ namespace psmpm
             const Tensor<1, 2> e1     = (cell->vertex(1) - v0) / k;
             const Tensor<1, 2> e2     = (cell->vertex(2) - v0) / k;
             const double       volume = cell->measure() / (k * k);
-            std::uint64_t      id     = std::uint64_t(c) * k * k;
+            // Numbered by the cell's index in the whole mesh (its coarse
+            // cell id; the mesh is not refined), also where a rank holds
+            // only part of it.
+            std::uint64_t id =
+              std::uint64_t(cell->id().get_coarse_cell_id()) * k * k;
             // k^2 sub-triangles: upright (i, j) and inverted ones.
             for (unsigned int j = 0; j < k; ++j)
               for (unsigned int i = 0; i + j < k; ++i)
@@ -300,7 +314,13 @@ namespace psmpm
       // candidate point x belongs to (0: the one material of a scene
       // without Bodies) or -1 for none.
       std::vector<double> densities{density};
-      const auto          place = [&](const auto &classify) {
+      // A distributed mesh: this rank holds its cells and their ghost
+      // layer only.
+      const auto *par =
+        dynamic_cast<const parallel::fullydistributed::Triangulation<dim> *>(
+          &tria);
+      const bool partial = par != nullptr;
+      const auto place   = [&](const auto &classify) {
         if constexpr (dim == 1)
           {
             (void)tria;
@@ -311,6 +331,7 @@ namespace psmpm
                            densities,
                            is_owned,
                            classify,
+                           partial,
                            particles);
           }
         else if (mesh.type != Mesh::MeshGenerator<dim>::Type::gmsh)
@@ -322,6 +343,7 @@ namespace psmpm
                             densities,
                             is_owned,
                             classify,
+                            partial,
                             particles);
           }
         else
@@ -353,16 +375,21 @@ namespace psmpm
               Point<2>     mean;
               for (const auto &p : outline)
                 mean += p / double(outline.size());
-              for (const auto &p : outline)
-                {
-                  const Point<2> q = p + 1e-9 * (mean - p);
-                  AssertThrow(locator.locate(q) !=
-                                Mesh::CellLocator<2>::invalid,
-                              ExcMessage(body.name() + " (" +
-                                         body.shape.description() +
-                                         ") reaches outside the mesh at " +
-                                         where(p) + "."));
-                }
+              // On a distributed mesh a point is inside if some rank
+              // holds its cell.
+              std::vector<unsigned int> inside(outline.size());
+              for (std::size_t i = 0; i < outline.size(); ++i)
+                inside[i] =
+                  locator.locate(outline[i] + 1e-9 * (mean - outline[i])) !=
+                  Mesh::CellLocator<2>::invalid;
+              if (partial)
+                Utilities::MPI::max(inside, par->get_communicator(), inside);
+              for (std::size_t i = 0; i < outline.size(); ++i)
+                AssertThrow(inside[i],
+                            ExcMessage(body.name() + " (" +
+                                       body.shape.description() +
+                                       ") reaches outside the mesh at " +
+                                       where(outline[i]) + "."));
             }
           for (const Body &body : bodies.bodies)
             densities.push_back(body.density > 0 ? body.density : density);
@@ -387,6 +414,15 @@ namespace psmpm
               ++count[found];
             return found;
           });
+          // A distributed Gmsh mesh: each rank placed its part's points.
+          if (partial && mesh.type == Mesh::MeshGenerator<dim>::Type::gmsh)
+            {
+              const MPI_Comm comm = par->get_communicator();
+              for (const auto &o : Utilities::MPI::all_gather(comm, overlap))
+                if (overlap.empty())
+                  overlap = o;
+              Utilities::MPI::sum(count, comm, count);
+            }
           AssertThrow(overlap.empty(), ExcMessage(overlap));
           for (const Body &body : bodies.bodies)
             AssertThrow(count[body.number] > 0,

@@ -98,9 +98,11 @@ namespace psmpm
       void
       pack_with_cell(const Particles::ParticleSet<dim> &particles,
                      const std::size_t                  i,
-                     std::vector<double>               &buffer)
+                     std::vector<double>               &buffer,
+                     const std::vector<unsigned int>   &whole_index = {})
       {
-        buffer.push_back(particles.cell[i]);
+        const unsigned int c = particles.cell[i];
+        buffer.push_back(whole_index.empty() ? c : whole_index[c]);
         particles.pack(i, buffer);
       }
 
@@ -386,9 +388,10 @@ namespace psmpm
     void
     Checkpoint::gather_particles(const Particles::ParticleSet<dim> &particles,
                                  Archive                           &archive,
-                                 MPI_Comm                           comm)
+                                 MPI_Comm                           comm,
+                                 const std::vector<unsigned int>   &whole_index)
     {
-      if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      if (Utilities::MPI::n_mpi_processes(comm) == 1 && whole_index.empty())
         {
           particles.save(archive);
           return;
@@ -396,7 +399,7 @@ namespace psmpm
       std::vector<double> buffer;
       buffer.reserve(particles.size() * (1 + particles.n_packed()));
       for (std::size_t i = 0; i < particles.size(); ++i)
-        pack_with_cell(particles, i, buffer);
+        pack_with_cell(particles, i, buffer, whole_index);
       const std::vector<double> all = gather_doubles(buffer, comm);
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
@@ -467,11 +470,13 @@ namespace psmpm
     template void
     Checkpoint::gather_particles(const Particles::ParticleSet<1> &,
                                  Archive &,
-                                 MPI_Comm);
+                                 MPI_Comm,
+                                 const std::vector<unsigned int> &);
     template void
     Checkpoint::gather_particles(const Particles::ParticleSet<2> &,
                                  Archive &,
-                                 MPI_Comm);
+                                 MPI_Comm,
+                                 const std::vector<unsigned int> &);
     template void
     Checkpoint::scatter_particles(const Archive &,
                                   const std::vector<unsigned int> &,

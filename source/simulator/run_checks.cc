@@ -23,7 +23,7 @@ namespace psmpm
       const double dt  = time_step_control.get_time_step();
       const double end = time_step_control.get_end_time();
       size.steps       = dt > 0 ? std::ceil(end / dt) : 0;
-      size.n_cells     = state.triangulation.n_active_cells();
+      size.n_cells     = state.triangulation->n_global_active_cells();
       size.n_particles =
         Utilities::MPI::sum(double(state.particles.size()), comm);
       size.n_outputs = 2;

@@ -4,6 +4,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <psmpm/base/archive.h>
 #include <psmpm/base/checked_file.h>
@@ -335,10 +336,59 @@ namespace psmpm
 
     template <int dim>
     void
+    Simulator<dim>::check_distribution() const
+    {
+      if (!mesh_generator.distributed)
+        return;
+      const auto refuse = [](const bool ok, const std::string &what) {
+        AssertThrow(ok,
+                    ExcMessage("Mesh/Distribution = distributed: " + what +
+                               " is not verified on a distributed mesh (use "
+                               "Mesh/Distribution = replicated)."));
+      };
+      // A Powell-Sabin or B-spline function of a ghost cell is built from
+      // cells around its vertex that the rank may not hold.
+      refuse(basis_name == "linear", "Basis/Type = " + basis_name);
+      refuse(reconstruction_name == "particles",
+             "Transfer/Reconstruction = " + reconstruction_name);
+      refuse(!transfer->moves_grid() &&
+               !(closed_transfer && closed_transfer->moves_grid()),
+             "Transfer/Scheme = " + transfer_name +
+               " (a grid that moves with the material)");
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::create_mesh()
+    {
+      // One rank holds the whole mesh either way: the replicated mesh
+      // spares building it twice (and the cell renumbering of the
+      // checkpoints).
+      if (!mesh_generator.distributed ||
+          Utilities::MPI::n_mpi_processes(comm) == 1)
+        {
+          mesh_generator.create(*state.triangulation);
+          return;
+        }
+      auto tria =
+        std::make_unique<parallel::fullydistributed::Triangulation<dim>>(comm);
+      state.whole_owner = mesh_generator.create_distributed(*tria);
+      state.whole_index.clear();
+      for (const auto &cell : tria->active_cell_iterators())
+        state.whole_index.push_back(cell->id().get_coarse_cell_id());
+      AssertThrow(std::is_sorted(state.whole_index.begin(),
+                                 state.whole_index.end()),
+                  ExcInternalError());
+      state.triangulation = std::move(tria);
+    }
+
+    template <int dim>
+    void
     Simulator<dim>::setup()
     {
-      mesh_generator.create(state.triangulation);
-      state.locator.reinit(state.triangulation);
+      check_distribution();
+      create_mesh();
+      state.locator.reinit(*state.triangulation);
       setup_space_and_grid();
       time_step_control.initialize(state);
       setup_particles();
@@ -371,7 +421,7 @@ namespace psmpm
                            "criss-cross, diagonal or gmsh); Mesh/Type = "
                            "cartesian is for Basis/Type = bspline.")));
         }
-      state.dof_handler.reinit(state.triangulation);
+      state.dof_handler.reinit(*state.triangulation);
       state.dof_handler.distribute_dofs(state.space->dof_layout());
       state.space->reinit(state.dof_handler);
       {
@@ -406,8 +456,12 @@ namespace psmpm
       // Powell-Sabin: displacement error 3.7e-3 against 9.1e-2 with
       // lumped mass and APIC at the same CPU time (doc/transfers.md
       // "Defaults").
-      if (closed_rule && particle_generator.fills_mesh(state.triangulation) &&
-          Mesh::is_closed<dim>(state.triangulation, fixed))
+      // Both decided over all ranks: a distributed mesh is seen in part.
+      if (closed_rule &&
+          Utilities::MPI::min(
+            particle_generator.fills_mesh(*state.triangulation) ? 1 : 0,
+            comm) == 1 &&
+          Mesh::is_closed<dim>(*state.triangulation, fixed))
         {
           grid_parameters.type = state.space->closed_mass_matrix();
           if (closed_transfer)
@@ -467,6 +521,14 @@ namespace psmpm
                                                              *state.space,
                                                              state.dof_handler,
                                                              comm);
+      AssertThrow(!mesh_generator.distributed ||
+                    !state.grid->needs_replicated_mesh(),
+                  ExcMessage("Mesh/Distribution = distributed: Mass matrix/"
+                             "Type = " +
+                             grid_parameters.type +
+                             " is not verified on a distributed mesh (it "
+                             "looks at vertices a rank may not hold; use "
+                             "Mesh/Distribution = replicated)."));
       // The heaviest material sets the scale of the nearly-empty thresholds:
       // a lighter body's full cells then count as partly filled (more rows
       // lumped, stable), never a heavier body's nearly empty ones as full.
@@ -480,15 +542,15 @@ namespace psmpm
       // Particles of the locally owned cells, with their initial state
       // and velocity.
       const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-      state.cell_owner.resize(state.triangulation.n_active_cells());
-      for (const auto &cell : state.triangulation.active_cell_iterators())
+      state.cell_owner.resize(state.triangulation->n_active_cells());
+      for (const auto &cell : state.triangulation->active_cell_iterators())
         state.cell_owner[cell->active_cell_index()] = cell->subdomain_id();
       auto &particles = state.particles;
       particles.set_state_names(state.materials.state_names());
       particles.body_material = state.materials.material_ids();
       particle_generator.generate(
         mesh_generator,
-        state.triangulation,
+        *state.triangulation,
         state.locator,
         state.materials.primary().density,
         [this, rank](const unsigned int c) {
@@ -547,7 +609,7 @@ namespace psmpm
         set_velocity(body.velocity,
                      body.name() + "/Initial velocity",
                      body.number);
-      particles.sort_by_cell(state.triangulation.n_active_cells());
+      particles.sort_by_cell(state.triangulation->n_active_cells());
       set_particle_capacity(particles, comm);
     }
 
@@ -1009,7 +1071,10 @@ namespace psmpm
 
       put_grid_fields(state, archive, comm);
 
-      Checkpoint::gather_particles(state.particles, archive, comm);
+      Checkpoint::gather_particles(state.particles,
+                                   archive,
+                                   comm,
+                                   state.whole_index);
       checkpoint.write(output_directory, state.step, archive, comm);
       if (!quiet)
         pcout << "psmpm: checkpoint " << output_directory << "/"
@@ -1103,10 +1168,19 @@ namespace psmpm
           Archive shared = archive;
           shared.erase_prefix("particles/");
           shared = Utilities::MPI::broadcast(comm, shared, 0);
+          // The file names cells by their index in the whole mesh.
           Checkpoint::scatter_particles(archive,
-                                        state.cell_owner,
+                                        state.whole_index.empty() ?
+                                          state.cell_owner :
+                                          state.whole_owner,
                                         state.particles,
                                         comm);
+          for (auto &c : state.particles.cell)
+            {
+              c = state.local_cell(c);
+              AssertThrow(c != numbers::invalid_unsigned_int,
+                          ExcInternalError());
+            }
           set_particle_capacity(state.particles, comm);
           archive = Archive();
 
@@ -1200,7 +1274,15 @@ namespace psmpm
       }
       summary.set_integer("dimension", dim);
       summary.set_integer("n_dofs", n_functions);
-      summary.set_integer("n_cells", state.triangulation.n_active_cells());
+      summary.set_integer("n_cells",
+                          state.triangulation->n_global_active_cells());
+      // What a rank holds: every cell (replicated) or its part with the
+      // ghost layer (distributed).
+      summary.set("mesh_distribution",
+                  mesh_generator.distributed ? "distributed" : "replicated");
+      summary.set_integer(
+        "max_cells_per_rank",
+        Utilities::MPI::max(state.triangulation->n_active_cells(), comm));
       summary.set_integer("n_particles",
                           Utilities::MPI::sum(state.particles.size(), comm));
       summary.set_integer("n_mpi_ranks", Utilities::MPI::n_mpi_processes(comm));

@@ -1,8 +1,12 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/distributed/shared_tria.h>
+
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/state.h>
+
+#include <algorithm>
 
 namespace psmpm
 {
@@ -11,11 +15,25 @@ namespace psmpm
     template <int dim>
     State<dim>::State(MPI_Comm comm)
       : comm(comm)
-      , triangulation(comm,
-                      Triangulation<dim>::none,
-                      false,
-                      parallel::shared::Triangulation<dim>::partition_metis)
+      , triangulation(std::make_unique<parallel::shared::Triangulation<dim>>(
+          comm,
+          Triangulation<dim>::none,
+          false,
+          parallel::shared::Triangulation<dim>::partition_metis))
     {
+    }
+
+    template <int dim>
+    unsigned int
+    State<dim>::local_cell(const unsigned int whole) const
+    {
+      if (whole_index.empty())
+        return whole;
+      const auto it =
+        std::lower_bound(whole_index.begin(), whole_index.end(), whole);
+      return it != whole_index.end() && *it == whole ?
+               static_cast<unsigned int>(it - whole_index.begin()) :
+               numbers::invalid_unsigned_int;
     }
 
     template <int dim>

@@ -13,6 +13,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/solver/component_cg.h>
 #include <psmpm/solver/grid_system.h>
 
@@ -263,6 +264,7 @@ namespace psmpm
       owned_is_relevant =
         Utilities::MPI::min(relevant == owned ? 1U : 0U, comm) == 1;
 
+      cells_exchange.reinit(dof_handler.get_triangulation());
       owned_cell_indices.clear();
       cell_dof_indices.assign(n_cells * dofs_per_cell, 0);
       std::vector<types::global_dof_index> dofs(dofs_per_cell);
@@ -653,8 +655,11 @@ namespace psmpm
                                                  numbers::invalid_unsigned_int);
                   }
             }
+          // The outer faces of a distributed mesh's ghost layer are no
+          // boundary of the mesh.
           for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() != Mesh::rim_boundary_id)
               {
                 bool free = true;
                 for (unsigned int d = 0; d < dim; ++d)

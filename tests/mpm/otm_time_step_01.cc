@@ -42,12 +42,12 @@ namespace
     const auto                           &particles = state.particles;
     const auto                           &X = particles.initial_position;
     std::vector<std::vector<std::size_t>> in_cell(
-      state.triangulation.n_active_cells());
+      state.triangulation->n_active_cells());
     for (std::size_t p = 0; p < particles.size(); ++p)
       in_cell[particles.cell[p]].push_back(p);
-    std::vector<Point<dim>> moved(state.triangulation.n_vertices());
+    std::vector<Point<dim>> moved(state.triangulation->n_vertices());
     std::vector<bool>       known(moved.size(), false);
-    for (const auto &cell : state.triangulation.active_cell_iterators())
+    for (const auto &cell : state.triangulation->active_cell_iterators())
       {
         const auto &ps = in_cell[cell->active_cell_index()];
         if (ps.size() < dim + 1)
@@ -88,7 +88,7 @@ namespace
           }
       }
     double h = std::numeric_limits<double>::max();
-    for (const auto &cell : state.triangulation.active_cell_iterators())
+    for (const auto &cell : state.triangulation->active_cell_iterators())
       if (!in_cell[cell->active_cell_index()].empty())
         {
           std::array<Point<dim>, dim + 1> v;

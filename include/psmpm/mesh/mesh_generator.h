@@ -6,10 +6,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/grid/tria.h>
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace psmpm
 {
@@ -32,6 +34,10 @@ namespace psmpm
      * left (x = 0) and right (x = Length), 0 and 1. Type (other than gmsh,
      * which is an error), Height and Blocks y are ignored.
      */
+    /// Boundary id of the faces that bound a rank's ghost layer inside
+    /// a distributed mesh (never a boundary of the mesh).
+    constexpr types::boundary_id rim_boundary_id = 254;
+
     template <int dim>
     class MeshGenerator
     {
@@ -54,6 +60,23 @@ namespace psmpm
       /// Fill the (empty) triangulation @p tria.
       void
       create(Triangulation<dim> &tria) const;
+
+      /**
+       * Mesh/Distribution = distributed: fill @p tria with this rank's
+       * cells and the layer of cells sharing a vertex with one (deal.II's
+       * ghost cells). Rank 0 alone builds the whole mesh, partitions it
+       * with METIS (as parallel::shared does) and sends every rank its
+       * part, so no other rank ever holds the whole mesh. The faces that
+       * bound the ghost layer but not the mesh get rim_boundary_id
+       * (deal.II would give them boundary id 0, which a scene may fix).
+       * Collective; an error in the mesh (a bad Gmsh file) is thrown on
+       * every rank. Returns the owning rank of every cell of the whole
+       * mesh, by its index there (= the coarse cell id of the cell in
+       * @p tria), for the checkpoints.
+       */
+      std::vector<unsigned int>
+      create_distributed(
+        parallel::fullydistributed::Triangulation<dim> &tria) const;
 
       /// Map from boundary name to boundary id for the created mesh.
       const std::map<std::string, types::boundary_id> &
@@ -84,6 +107,8 @@ namespace psmpm
       unsigned int blocks_x = 1;
       unsigned int blocks_y = 1;
       std::string  file;
+      /// Mesh/Distribution = distributed.
+      bool distributed = false;
 
     private:
       mutable std::map<std::string, types::boundary_id> names;

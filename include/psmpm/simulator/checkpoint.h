@@ -125,12 +125,15 @@ namespace psmpm
       gather_per_rank(const std::vector<double> &local, MPI_Comm comm);
 
       /// Gather the particles of all ranks, in rank order, into
-      /// @p archive of rank 0 (ParticleSet::save()).
+      /// @p archive of rank 0 (ParticleSet::save()). Cells are written
+      /// as their index in the whole mesh: @p whole_index of the rank's
+      /// cells on a distributed mesh, empty on a replicated one.
       template <int dim>
       static void
       gather_particles(const Particles::ParticleSet<dim> &particles,
                        Archive                           &archive,
-                       MPI_Comm                           comm);
+                       MPI_Comm                           comm,
+                       const std::vector<unsigned int>   &whole_index = {});
 
       /**
        * Replace @p particles by those of @p archive (read on rank 0) whose

@@ -6,7 +6,6 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
-#include <psmpm/postprocess/statistics_table.h>
 #include <deal.II/base/timer.h>
 
 #include <psmpm/base/phase_timer.h>
@@ -17,6 +16,7 @@
 #include <psmpm/postprocess/output_writer.h>
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/rotation_statistics.h>
+#include <psmpm/postprocess/statistics_table.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/postprocess/tracked_particle.h>
 #include <psmpm/simulator/checkpoint.h>
@@ -230,6 +230,13 @@ namespace psmpm
       }
 
     private:
+      /// Mesh/Distribution = distributed: refuse what is not verified on
+      /// a mesh that each rank holds only in part.
+      void
+      check_distribution() const;
+      /// Build the triangulation (replicated or distributed).
+      void
+      create_mesh();
       void
       setup_space_and_grid();
       void
@@ -305,13 +312,13 @@ namespace psmpm
       std::unique_ptr<Postprocess::OutputWriter<dim>>    writer;
 
       // Run record.
-      std::string  output_directory;
+      std::string                  output_directory;
       Postprocess::StatisticsTable statistics;
-      PhaseTimer   timer;
-      Status       status           = Status::completed;
-      unsigned int failed_step      = 0;
-      double       failed_time      = 0;
-      unsigned int total_iterations = 0;
+      PhaseTimer                   timer;
+      Status                       status           = Status::completed;
+      unsigned int                 failed_step      = 0;
+      double                       failed_time      = 0;
+      unsigned int                 total_iterations = 0;
       /// Multiples of Output/Time interval passed.
       unsigned int time_outputs = 0;
       /// The times at which the reference was advanced (checkpoints).

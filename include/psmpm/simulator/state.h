@@ -4,7 +4,7 @@
 #ifndef psmpm_simulator_state_h
 #define psmpm_simulator_state_h
 
-#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_handler.h>
 
 #include <psmpm/basis/space.h>
@@ -42,12 +42,19 @@ namespace psmpm
       void
       evaluate_shape_functions();
 
-      MPI_Comm                                 comm;
-      parallel::shared::Triangulation<dim>     triangulation;
-      DoFHandler<dim>                          dof_handler;
-      std::unique_ptr<Basis::Space<dim>>       space;
-      Mesh::CellLocator<dim>                   locator;
-      std::unique_ptr<Solver::GridSystem<dim>> grid;
+      /// The rank's cell of index @p whole in the whole mesh (the identity
+      /// on a replicated mesh), or numbers::invalid_unsigned_int.
+      unsigned int
+      local_cell(const unsigned int whole) const;
+
+      MPI_Comm comm;
+      /// Replicated (parallel::shared) or, with Mesh/Distribution =
+      /// distributed, parallel::fullydistributed.
+      std::unique_ptr<parallel::TriangulationBase<dim>> triangulation;
+      DoFHandler<dim>                                   dof_handler;
+      std::unique_ptr<Basis::Space<dim>>                space;
+      Mesh::CellLocator<dim>                            locator;
+      std::unique_ptr<Solver::GridSystem<dim>>          grid;
       /// How particle data reach the grid integrals; nullptr: the
       /// particles themselves (Transfer/Reconstruction = particles).
       std::unique_ptr<Reconstruction<dim>> reconstruction;
@@ -55,6 +62,10 @@ namespace psmpm
       Particles::ParticleSet<dim>          particles;
       Tensor<1, dim>                       gravity;
       std::vector<unsigned int>            cell_owner; ///< MPI rank
+      /// A distributed mesh: the index in the whole mesh of each of the
+      /// rank's cells (increasing), and the owner of every cell of the
+      /// whole mesh (checkpoints name cells by it). Empty when replicated.
+      std::vector<unsigned int> whole_index, whole_owner;
       /// Basis at the particles, dofs_per_cell per particle.
       std::vector<double>         shape_values;
       std::vector<Tensor<1, dim>> shape_gradients;

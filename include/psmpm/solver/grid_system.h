@@ -17,6 +17,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <psmpm/basis/space.h>
+#include <psmpm/solver/cell_exchange.h>
 #include <psmpm/solver/component_cg.h>
 #include <psmpm/solver/dense_cholesky.h>
 #include <psmpm/solver/ghost_exchange.h>
@@ -243,6 +244,20 @@ namespace psmpm
       vertex_tables() const
       {
         return vertices;
+      }
+      /// Whether the mass strategy needs every rank to hold the whole
+      /// mesh (MassStrategy::needs_replicated_mesh()).
+      bool
+      needs_replicated_mesh() const
+      {
+        return mass_strategy->needs_replicated_mesh();
+      }
+      /// Owners' per-cell values to the cells sharing a vertex with an
+      /// owned cell.
+      const CellExchange &
+      cell_exchange() const
+      {
+        return cells_exchange;
       }
 
       const SolveStatistics &
@@ -547,6 +562,7 @@ namespace psmpm
       mutable std::vector<double> scratch;
       /// Sums and ghost values between ranks (unused on one rank).
       GhostExchange exchange;
+      CellExchange  cells_exchange;
       /// Per-cell scratch of particle_diagonal() and its result.
       std::vector<double> cell_scratch, diagonal_scratch;
       /// Local relevant index of the j-th owned DoF: owned vectors (the

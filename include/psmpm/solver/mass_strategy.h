@@ -54,6 +54,14 @@ namespace psmpm
         return false;
       }
 
+      /// true if the strategy needs every rank to hold the whole mesh:
+      /// needs_all_dofs(), or state numbered by the whole mesh's vertices.
+      virtual bool
+      needs_replicated_mesh() const
+      {
+        return needs_all_dofs();
+      }
+
       /// true if the strategy adds patch blocks that couple the DoFs of two
       /// cells sharing a vertex (the sparsity then couples every DoF of the
       /// cells around a vertex with every other).

@@ -314,7 +314,7 @@ namespace psmpm
       void
       TaylorLeastSquares<dim>::initialize(const State<dim> &state)
       {
-        const auto &tria = state.triangulation;
+        const auto &tria = *state.triangulation;
         // The 2D Taylor basis is written in barycentric coordinates.
         AssertThrow(dim == 1 || tria.all_reference_cells_are_simplex(),
                     ExcMessage("Transfer/Reconstruction = taylor least "

@@ -169,8 +169,11 @@ namespace psmpm
                         local.begin() + n_c);
               cap_fill_by_sampling(grid, measure, target, local.data() + n_c);
             }
-          std::vector<double> fill(local.size());
-          Utilities::MPI::max(local, grid.get_communicator(), fill);
+          // The pairs reach the cells sharing a vertex with an owned one.
+          std::vector<double> &fill = local;
+          grid.cell_exchange().owners_to_neighbours(fill.data());
+          if (cap)
+            grid.cell_exchange().owners_to_neighbours(fill.data() + n_c);
           const double     *sampled = fill.data() + (cap ? n_c : 0);
           const auto       &active  = grid.lumped_mass();
           const double      rho     = grid.reference_density();

@@ -41,16 +41,12 @@ namespace psmpm
           const auto        &tables = grid.vertex_tables();
           const auto        &global = grid.relevant_global_indices();
           MPI_Comm           comm   = grid.get_communicator();
-          // Filled cells, known on every rank.
+          // Filled cells, known where a vertex of an owned cell looks.
           std::vector<int> filled(grid.n_cells, 0);
           for (const unsigned int c : grid.owned_cells())
             for (unsigned int k = 0; k < n; ++k)
               filled[c] |= cells.lumped[c * n + k] > 0;
-          {
-            std::vector<int> all(grid.n_cells);
-            Utilities::MPI::max(filled, comm, all);
-            filled.swap(all);
-          }
+          grid.cell_exchange().owners_to_neighbours(filled);
 
           std::vector<bool> boundary_dof(global.size(), false);
           unsigned int      n_treated = 0;

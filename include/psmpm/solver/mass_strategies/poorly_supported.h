@@ -33,6 +33,14 @@ namespace psmpm
         return extrapolate;
       }
 
+      /// The history (and the nearest supported vertex) is numbered by
+      /// the vertices of the whole mesh.
+      bool
+      needs_replicated_mesh() const override
+      {
+        return true;
+      }
+
       bool
       prepare(GridSystem<dim>           &grid,
               const std::vector<double> &diagonal) override;

@@ -1,0 +1,135 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// Mesh/Distribution = distributed: the whole mesh is built on rank 0
+// only, and each rank receives its cells and their ghost layer.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi.templates.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <psmpm/mesh/mesh_generator.h>
+
+#include <algorithm>
+#include <boost/serialization/array.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+#include <sstream>
+
+namespace psmpm
+{
+  namespace Mesh
+  {
+    namespace
+    {
+      /// Give the faces of @p description's ghost cells that lie inside
+      /// @p whole but have no neighbour in the description the rim id:
+      /// deal.II would make them boundary faces with id 0.
+      template <int dim>
+      void
+      mark_rim_faces(
+        const Triangulation<dim>                        &whole,
+        TriangulationDescription::Description<dim, dim> &description,
+        const unsigned int                               rank)
+      {
+        std::vector<types::coarse_cell_id> held;
+        for (const auto &info : description.cell_infos[0])
+          held.push_back(CellId(info.id).get_coarse_cell_id());
+        std::sort(held.begin(), held.end());
+        for (auto &info : description.cell_infos[0])
+          if (info.subdomain_id != rank)
+            {
+              const typename Triangulation<dim>::active_cell_iterator
+                cell(&whole, 0, CellId(info.id).get_coarse_cell_id());
+              for (const unsigned int f : cell->face_indices())
+                if (!cell->at_boundary(f) &&
+                    !std::binary_search(held.begin(),
+                                        held.end(),
+                                        cell->neighbor(f)->index()))
+                  info.boundary_ids.emplace_back(f, rim_boundary_id);
+            }
+      }
+    } // namespace
+
+    template <int dim>
+    std::vector<unsigned int>
+    MeshGenerator<dim>::create_distributed(
+      parallel::fullydistributed::Triangulation<dim> &tria) const
+    {
+      using Description       = TriangulationDescription::Description<dim, dim>;
+      const MPI_Comm     comm = tria.get_communicator();
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      std::map<unsigned int, Description> parts;
+      std::vector<unsigned int>           owner;
+      std::string                         error;
+      if (rank == 0)
+        try
+          {
+            Triangulation<dim> whole;
+            create(whole);
+            AssertThrow(whole.n_levels() == 1, ExcInternalError());
+            for (const auto &face : whole.active_face_iterators())
+              AssertThrow(!face->at_boundary() ||
+                            face->boundary_id() != rim_boundary_id,
+                          ExcMessage("Mesh/File = " + file + ": boundary tag " +
+                                     std::to_string(rim_boundary_id) +
+                                     " is reserved with Mesh/Distribution = "
+                                     "distributed (the inner edges of a "
+                                     "rank's part)."));
+            GridTools::partition_triangulation(
+              n_ranks,
+              whole,
+              SparsityTools::Partitioner::metis);
+            owner.resize(whole.n_active_cells());
+            for (const auto &cell : whole.active_cell_iterators())
+              owner[cell->active_cell_index()] = cell->subdomain_id();
+            for (unsigned int r = 0; r < n_ranks; ++r)
+              {
+                parts[r] = TriangulationDescription::Utilities::
+                  create_description_from_triangulation(
+                    whole,
+                    comm,
+                    TriangulationDescription::Settings::default_setting,
+                    r);
+                mark_rim_faces(whole, parts[r], r);
+              }
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream s;
+            e.print_info(s);
+            error = Utilities::trim(s.str());
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      // Every rank throws what rank 0 found: none waits for a part.
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      AssertThrow(error.empty(), ExcMessage(error));
+      names = Utilities::MPI::broadcast(comm, names, 0);
+      owner = Utilities::MPI::broadcast(comm, owner, 0);
+      Description mine;
+      if (rank == 0)
+        {
+          mine = std::move(parts[0]);
+          parts.erase(0);
+        }
+      auto incoming = Utilities::MPI::some_to_some(comm, parts);
+      if (rank != 0)
+        mine = std::move(incoming.at(0));
+      tria.create_triangulation(mine);
+      return owner;
+    }
+
+    template std::vector<unsigned int>
+    MeshGenerator<1>::create_distributed(
+      parallel::fullydistributed::Triangulation<1> &) const;
+    template std::vector<unsigned int>
+    MeshGenerator<2>::create_distributed(
+      parallel::fullydistributed::Triangulation<2> &) const;
+  } // namespace Mesh
+} // namespace psmpm

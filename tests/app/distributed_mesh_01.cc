@@ -1,0 +1,152 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+// Mesh/Distribution = distributed on 2 ranks (.mpirun=2): each rank holds
+// its cells and their ghost layer (parallel::fullydistributed), rank 0
+// alone builds the whole mesh. With the same METIS partition as the
+// replicated mesh, the runs repeat the replicated ones: statistics.txt
+// equal in every column but wall time, for particles that cross between
+// ranks (column collapse), the automatic mass matrix on a free body (the
+// ghost penalty with its sampling cap, rotating block), bodies (two
+// disks) and a Gmsh mesh (ring impact). A distributed checkpoint resumes
+// bit-identically. What is not verified there is refused with exit 2.
+#include "../app_tests.h"
+#include "../checkpoint_tests.h"
+
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+  std::vector<std::string>
+  scene_args(const std::string &scene, const std::vector<std::string> &settings)
+  {
+    std::vector<std::string> args = {std::string(PSMPM_SOURCE_DIR) + "/prm/" +
+                                     scene + ".prm"};
+    for (const auto &s : settings)
+      args.insert(args.end(), {"--set", s});
+    return args;
+  }
+
+  /// Run @p scene replicated and distributed into rep and dist.
+  void
+  compare(std::ostream                   &out,
+          const std::string              &scene,
+          const std::vector<std::string> &settings)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    int        codes[2];
+    for (const unsigned int k : {0, 1})
+      {
+        const std::string dir = k == 0 ? "rep" : "dist";
+        if (root)
+          fs::remove_all(dir);
+        MPI_Barrier(MPI_COMM_WORLD);
+        auto args = scene_args(scene, settings);
+        args.insert(args.end(),
+                    {"--set",
+                     "Output directory=" + dir,
+                     "--set",
+                     std::string("Mesh/Distribution=") +
+                       (k == 0 ? "replicated" : "distributed")});
+        std::string screen, errors;
+        codes[k] =
+          Utilities::MPI::max(run_app(args, screen, errors), MPI_COMM_WORLD);
+      }
+    out << scene << ": exit codes " << codes[0] << ", " << codes[1]
+        << std::endl;
+    if (!root)
+      return;
+    const auto rep  = statistics_rows("rep/statistics.txt");
+    const auto dist = statistics_rows("dist/statistics.txt");
+    PSMPM_CHECK(out, rep.size() > 10);
+    PSMPM_CHECK(out, rep == dist);
+    const auto a     = read_file("rep/summary.json");
+    const auto b     = read_file("dist/summary.json");
+    const auto value = [](const std::string &summary, const std::string &key) {
+      const auto at = summary.find("\"" + key + "\":");
+      return at == std::string::npos ?
+               -1. :
+               std::stod(summary.substr(at + key.size() + 3));
+    };
+    PSMPM_CHECK(out, value(a, "n_cells") == value(b, "n_cells"));
+    // Replicated, a rank holds every cell; distributed, fewer.
+    PSMPM_CHECK(out, value(a, "max_cells_per_rank") == value(a, "n_cells"));
+    PSMPM_CHECK(out, value(b, "max_cells_per_rank") < value(b, "n_cells"));
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ofstream out(root ? "output" : "/dev/null");
+
+  compare(out, "column_collapse", {"Time/End time=0.2", "Output/Interval=0"});
+  compare(out,
+          "rotating_block",
+          {"Time/End time=0.1",
+           "Output/Interval=0",
+           "Mass matrix/Type=automatic",
+           "Transfer/Scheme=automatic"});
+  compare(out, "two_disks", {"Time/End time=0.2", "Output/Interval=0"});
+  compare(out, "ring_impact", {"Time/End time=0.03", "Output/Interval=0"});
+
+  // A checkpoint of the distributed mesh (cells named by their index in
+  // the whole mesh) resumes bit-identically.
+  const std::vector<std::string> checkpointed = {"Time/End time=0.2",
+                                                 "Output/Interval=0",
+                                                 "Checkpoint/Interval=50",
+                                                 "Mesh/Distribution="
+                                                 "distributed"};
+  if (root)
+    fs::remove_all("full");
+  MPI_Barrier(MPI_COMM_WORLD);
+  std::string screen, errors;
+  auto        args = scene_args("column_collapse", checkpointed);
+  args.insert(args.end(), {"--set", "Output directory=full"});
+  int code = Utilities::MPI::max(run_app(args, screen, errors), MPI_COMM_WORLD);
+  const std::string last = "/" + psmpm::Simulator::Checkpoint::file_name(105);
+  if (root)
+    {
+      PSMPM_CHECK(out, code == 0);
+      PSMPM_CHECK(out, fs::exists("full" + last));
+      copy_directory("full", "resumed");
+      fs::remove("resumed" + last);
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  args = scene_args("column_collapse", checkpointed);
+  args.insert(args.end(), {"--set", "Output directory=resumed", "--resume"});
+  code = Utilities::MPI::max(run_app(args, screen, errors), MPI_COMM_WORLD);
+  out << "resumed: exit code " << code << std::endl;
+  if (root)
+    {
+      PSMPM_CHECK(out, screen.find("step 100") != std::string::npos);
+      PSMPM_CHECK(out,
+                  statistics_rows("full/statistics.txt") ==
+                    statistics_rows("resumed/statistics.txt"));
+      PSMPM_CHECK(out,
+                  differing_entries(psmpm::Archive::read_hdf5("full" + last),
+                                    psmpm::Archive::read_hdf5("resumed" + last))
+                    .empty());
+    }
+
+  // Refused: a basis whose functions reach past the ghost layer.
+  code = run_app(scene_args("column_collapse",
+                            {"Basis/Type=powell-sabin",
+                             "Mesh/Distribution=distributed",
+                             "Output directory=refused"}),
+                 screen,
+                 errors);
+  out << "Powell-Sabin, distributed: exit code "
+      << Utilities::MPI::max(code, MPI_COMM_WORLD) << std::endl;
+  if (root)
+    {
+      PSMPM_CHECK(out,
+                  errors.find("Mesh/Distribution = distributed: Basis/Type = "
+                              "powell-sabin") != std::string::npos);
+      PSMPM_CHECK(out, !fs::exists("refused"));
+    }
+}
