@@ -495,10 +495,24 @@ namespace psmpm
       unsigned int k = 0;
       for (auto e = pmg_fine[d].begin(); e != pmg_fine[d].end(); ++e, ++k)
         e->value() = pmg_fine_slots[k] < 0 ? 0. : entries[pmg_fine_slots[k]];
+      // A fixed DoF whose support holds no particle has an empty row and
+      // column: add_block() puts the cell's diagonal (or the cell's
+      // average one), zero in an empty cell, on a fixed DoF's diagonal, and
+      // finish_assembly() gives a unit diagonal to free DoFs only. Jacobi
+      // (a zero inverse) and block Jacobi (masked rows) keep such a DoF at
+      // its zero guess, but both smoothers divide by the diagonal: one
+      // such row made the first V-cycle, hence CG's first residual, NaN.
+      // With a unit diagonal the DoF stays at zero (right-hand side and
+      // guess are zero there, its transfer row is zero), so CG's iterates
+      // on the other DoFs are unchanged. The matrix is symmetric positive
+      // semidefinite: a zero diagonal means a zero row.
+      for (unsigned int i = 0; i < n; ++i)
+        if (pmg_fine[d].diag_element(i) == 0)
+          pmg_fine[d].diag_element(i) = 1;
 
-      // P_d: constrained DoFs take no correction (their rows of matrix[d]
-      // are the identity with a zero right-hand side); with the particle
-      // coarse matrix, fixed P1 vertices give none either.
+      // P_d: constrained DoFs take no correction (their rows and columns
+      // hold only the diagonal, their right-hand side is zero); with the
+      // particle coarse matrix, fixed P1 vertices give none either.
       const bool particles = parameters.multigrid_coarse == "particles";
       pmg_transfer[d].copy_from(pmg_prolongation);
       for (unsigned int i = 0; i < n; ++i)
@@ -571,7 +585,8 @@ namespace psmpm
                                  Vector<double>(),
                                  pmg_rebuild[d]);
         }
-      // A vertex all of whose DoFs are fixed has an empty row.
+      // A vertex all of whose DoFs are fixed (with the particle coarse
+      // matrix also one whose hat holds no particle) has an empty row.
       for (unsigned int v = 0; v < pmg_coarse[d].m(); ++v)
         if (pmg_coarse[d].diag_element(v) == 0)
           pmg_coarse[d].diag_element(v) = 1;
