@@ -51,13 +51,63 @@ namespace psmpm
                   info.boundary_ids.emplace_back(f, rim_boundary_id);
             }
       }
+
+      /// Rank @p rank's part of @p whole (whose subdomain ids are the
+      /// owners, @p owner): its cells and @p layers layers of cells around
+      /// them (a cell of layer k shares a vertex with one of layer k - 1).
+      /// deal.II's description holds one layer; for two, the first layer
+      /// is described as the rank's own and then given back to its owners.
+      template <int dim>
+      TriangulationDescription::Description<dim, dim>
+      describe(Triangulation<dim>              &whole,
+               const std::vector<unsigned int> &owner,
+               const unsigned int               rank,
+               const unsigned int               layers,
+               const MPI_Comm                   comm)
+      {
+        if (layers == 2)
+          {
+            std::vector<bool> marked(whole.n_vertices(), false);
+            for (const auto &cell : whole.active_cell_iterators())
+              if (cell->subdomain_id() == rank)
+                for (const unsigned int v : cell->vertex_indices())
+                  marked[cell->vertex_index(v)] = true;
+            for (const auto &cell : whole.active_cell_iterators())
+              for (const unsigned int v : cell->vertex_indices())
+                if (marked[cell->vertex_index(v)])
+                  cell->set_subdomain_id(rank);
+          }
+        auto description = TriangulationDescription::Utilities::
+          create_description_from_triangulation(
+            whole,
+            comm,
+            TriangulationDescription::Settings::default_setting,
+            rank);
+        if (layers == 2)
+          {
+            for (auto &info : description.cell_infos[0])
+              {
+                const auto c = CellId(info.id).get_coarse_cell_id();
+                if (info.subdomain_id == rank && owner[c] != rank)
+                  info.subdomain_id = owner[c];
+                if (info.level_subdomain_id == rank && owner[c] != rank)
+                  info.level_subdomain_id = owner[c];
+              }
+            for (const auto &cell : whole.active_cell_iterators())
+              cell->set_subdomain_id(owner[cell->active_cell_index()]);
+          }
+        mark_rim_faces(whole, description, rank);
+        return description;
+      }
     } // namespace
 
     template <int dim>
     std::vector<unsigned int>
     MeshGenerator<dim>::create_distributed(
-      parallel::fullydistributed::Triangulation<dim> &tria) const
+      parallel::fullydistributed::Triangulation<dim> &tria,
+      const unsigned int                              ghost_layers) const
     {
+      AssertThrow(ghost_layers == 1 || ghost_layers == 2, ExcInternalError());
       using Description       = TriangulationDescription::Description<dim, dim>;
       const MPI_Comm     comm = tria.get_communicator();
       const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
@@ -87,15 +137,7 @@ namespace psmpm
             for (const auto &cell : whole.active_cell_iterators())
               owner[cell->active_cell_index()] = cell->subdomain_id();
             for (unsigned int r = 0; r < n_ranks; ++r)
-              {
-                parts[r] = TriangulationDescription::Utilities::
-                  create_description_from_triangulation(
-                    whole,
-                    comm,
-                    TriangulationDescription::Settings::default_setting,
-                    r);
-                mark_rim_faces(whole, parts[r], r);
-              }
+              parts[r] = describe(whole, owner, r, ghost_layers, comm);
           }
         catch (const ExceptionBase &e)
           {
@@ -127,9 +169,11 @@ namespace psmpm
 
     template std::vector<unsigned int>
     MeshGenerator<1>::create_distributed(
-      parallel::fullydistributed::Triangulation<1> &) const;
+      parallel::fullydistributed::Triangulation<1> &,
+      unsigned int) const;
     template std::vector<unsigned int>
     MeshGenerator<2>::create_distributed(
-      parallel::fullydistributed::Triangulation<2> &) const;
+      parallel::fullydistributed::Triangulation<2> &,
+      unsigned int) const;
   } // namespace Mesh
 } // namespace psmpm

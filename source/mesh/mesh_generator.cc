@@ -65,7 +65,8 @@ namespace psmpm
           "and the cells sharing a vertex with one "
           "(parallel::fullydistributed): memory per rank follows the rank's "
           "share of the mesh. Rank 0 builds the whole mesh once and sends "
-          "the parts. Verified with Basis/Type = linear, Transfer/"
+          "the parts (with Powell-Sabin two layers of ghost cells). Verified "
+          "with Basis/Type = linear and powell-sabin, Transfer/"
           "Reconstruction = particles and the transfers on a fixed grid; "
           "particles move at most into a neighbouring rank's cells per "
           "step (the Courant number keeps them within a cell).");

@@ -346,9 +346,10 @@ namespace psmpm
                                " is not verified on a distributed mesh (use "
                                "Mesh/Distribution = replicated)."));
       };
-      // A Powell-Sabin or B-spline function of a ghost cell is built from
-      // cells around its vertex that the rank may not hold.
-      refuse(basis_name == "linear", "Basis/Type = " + basis_name);
+      // A B-spline function of a ghost cell reaches cells (knot spans)
+      // beyond the ghost layers.
+      refuse(basis_name == "linear" || basis_name == "powell-sabin",
+             "Basis/Type = " + basis_name);
       refuse(reconstruction_name == "particles",
              "Transfer/Reconstruction = " + reconstruction_name);
       refuse(!transfer->moves_grid() &&
@@ -372,7 +373,11 @@ namespace psmpm
         }
       auto tria =
         std::make_unique<parallel::fullydistributed::Triangulation<dim>>(comm);
-      state.whole_owner = mesh_generator.create_distributed(*tria);
+      // A Powell-Sabin function of a ghost cell (the ghost penalty's
+      // pairs) is built from the cells around that cell's vertices.
+      state.whole_owner =
+        mesh_generator.create_distributed(*tria,
+                                          basis_name == "powell-sabin" ? 2 : 1);
       state.whole_index.clear();
       for (const auto &cell : tria->active_cell_iterators())
         state.whole_index.push_back(cell->id().get_coarse_cell_id());

@@ -8,7 +8,8 @@
 // equal in every column but wall time, for particles that cross between
 // ranks (column collapse), the automatic mass matrix on a free body (the
 // ghost penalty with its sampling cap, rotating block), bodies (two
-// disks) and a Gmsh mesh (ring impact). A distributed checkpoint resumes
+// disks), a Gmsh mesh (ring impact) and Powell-Sabin (spreading block,
+// with two ghost layers). A distributed checkpoint resumes
 // bit-identically. What is not verified there is refused with exit 2.
 #include "../app_tests.h"
 #include "../checkpoint_tests.h"
@@ -93,6 +94,15 @@ main(int argc, char **argv)
            "Transfer/Scheme=automatic"});
   compare(out, "two_disks", {"Time/End time=0.2", "Output/Interval=0"});
   compare(out, "ring_impact", {"Time/End time=0.03", "Output/Interval=0"});
+  // Powell-Sabin: two ghost layers (the functions of the first layer's
+  // cells are built from the cells around their vertices), the free
+  // surface's automatic mass and transfer.
+  compare(out,
+          "spreading_block",
+          {"Time/End time=0.6",
+           "Output/Interval=0",
+           "Mass matrix/Type=automatic",
+           "Transfer/Scheme=automatic"});
 
   // A checkpoint of the distributed mesh (cells named by their index in
   // the whole mesh) resumes bit-identically.
@@ -133,20 +143,21 @@ main(int argc, char **argv)
                     .empty());
     }
 
-  // Refused: a basis whose functions reach past the ghost layer.
+  // Refused: a basis whose functions reach past the ghost layers.
   code = run_app(scene_args("column_collapse",
-                            {"Basis/Type=powell-sabin",
+                            {"Basis/Type=bspline",
+                             "Mesh/Type=cartesian",
                              "Mesh/Distribution=distributed",
                              "Output directory=refused"}),
                  screen,
                  errors);
-  out << "Powell-Sabin, distributed: exit code "
+  out << "B-splines, distributed: exit code "
       << Utilities::MPI::max(code, MPI_COMM_WORLD) << std::endl;
   if (root)
     {
       PSMPM_CHECK(out,
                   errors.find("Mesh/Distribution = distributed: Basis/Type = "
-                              "powell-sabin") != std::string::npos);
+                              "bspline") != std::string::npos);
       PSMPM_CHECK(out, !fs::exists("refused"));
     }
 }

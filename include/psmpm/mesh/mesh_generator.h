@@ -63,8 +63,11 @@ namespace psmpm
 
       /**
        * Mesh/Distribution = distributed: fill @p tria with this rank's
-       * cells and the layer of cells sharing a vertex with one (deal.II's
-       * ghost cells). Rank 0 alone builds the whole mesh, partitions it
+       * cells and @p ghost_layers (1 or 2) layers of ghost cells around
+       * them: the cells sharing a vertex with one, and with two also the
+       * cells sharing a vertex with those (a Powell-Sabin function of a
+       * cell of the first layer is built from the cells around its
+       * vertices). Rank 0 alone builds the whole mesh, partitions it
        * with METIS (as parallel::shared does) and sends every rank its
        * part, so no other rank ever holds the whole mesh. The faces that
        * bound the ghost layer but not the mesh get rim_boundary_id
@@ -75,8 +78,8 @@ namespace psmpm
        * @p tria), for the checkpoints.
        */
       std::vector<unsigned int>
-      create_distributed(
-        parallel::fullydistributed::Triangulation<dim> &tria) const;
+      create_distributed(parallel::fullydistributed::Triangulation<dim> &tria,
+                         const unsigned int ghost_layers = 1) const;
 
       /// Map from boundary name to boundary id for the created mesh.
       const std::map<std::string, types::boundary_id> &
