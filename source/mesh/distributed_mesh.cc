@@ -134,8 +134,20 @@ namespace psmpm
               whole,
               SparsityTools::Partitioner::metis);
             owner.resize(whole.n_active_cells());
+            std::vector<unsigned int> n_owned(n_ranks, 0);
             for (const auto &cell : whole.active_cell_iterators())
-              owner[cell->active_cell_index()] = cell->subdomain_id();
+              {
+                owner[cell->active_cell_index()] = cell->subdomain_id();
+                ++n_owned[cell->subdomain_id()];
+              }
+            // A rank without cells would hold an empty mesh.
+            AssertThrow(*std::min_element(n_owned.begin(), n_owned.end()) > 0,
+                        ExcMessage(
+                          "Mesh/Distribution = distributed: the mesh's " +
+                          std::to_string(whole.n_active_cells()) +
+                          " cells leave a rank of " + std::to_string(n_ranks) +
+                          " without cells of its own; use fewer ranks or "
+                          "Mesh/Distribution = replicated."));
             for (unsigned int r = 0; r < n_ranks; ++r)
               parts[r] = describe(whole, owner, r, ghost_layers, comm);
           }

@@ -638,9 +638,15 @@ namespace psmpm
               std::string where = prm_value(particles.position[p][0]);
               for (unsigned int d = 1; d < dim; ++d)
                 where += ", " + prm_value(particles.position[p][d]);
+              // A distributed mesh: the rank sees its part only.
               monitor.report(Failure::left_mesh,
                              "particle " + std::to_string(particles.id[p]) +
-                               " left the mesh at (" + where + ")");
+                               " left the mesh" +
+                               (state.whole_index.empty() ?
+                                  "" :
+                                  " (or its rank's cells and ghost layers "
+                                  "in one step)") +
+                               " at (" + where + ")");
               continue; // keep its old cell; the run stops after this step
             }
           cell_crossings += c != particles.cell[p];

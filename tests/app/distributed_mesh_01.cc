@@ -143,6 +143,34 @@ main(int argc, char **argv)
                     .empty());
     }
 
+  // Refused: a mesh with fewer cells than ranks (a rank would hold an
+  // empty mesh), on every rank (no rank waits for a part).
+  if (root)
+    {
+      std::ofstream msh("one_cell.msh");
+      msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n"
+             "2 1 0 0\n3 0 1 0\n$EndNodes\n$Elements\n1\n1 2 2 0 1 1 2 3\n"
+             "$EndElements\n";
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  code = run_app(scene_args("column_collapse",
+                            {"Mesh/Type=gmsh",
+                             "Mesh/File=one_cell.msh",
+                             "Boundary conditions/Fixed x=",
+                             "Boundary conditions/Fixed y=",
+                             "Mesh/Distribution=distributed",
+                             "Output directory=refused"}),
+                 screen,
+                 errors);
+  out << "one cell, distributed: exit code "
+      << Utilities::MPI::max(code, MPI_COMM_WORLD) << std::endl;
+  if (root)
+    {
+      PSMPM_CHECK(out,
+                  errors.find("without cells of its own") != std::string::npos);
+      PSMPM_CHECK(out, !fs::exists("refused"));
+    }
+
   // Refused: a basis whose functions reach past the ghost layers.
   code = run_app(scene_args("column_collapse",
                             {"Basis/Type=bspline",
