@@ -8,6 +8,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <psmpm/base/root_errors.h>
 #include <psmpm/mesh/mesh_generator.h>
 
 #include <algorithm>
@@ -114,56 +115,40 @@ namespace psmpm
       const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
       std::map<unsigned int, Description> parts;
       std::vector<unsigned int>           owner;
-      std::string                         error;
-      if (rank == 0)
-        try
-          {
-            Triangulation<dim> whole;
-            create(whole);
-            AssertThrow(whole.n_levels() == 1, ExcInternalError());
-            for (const auto &face : whole.active_face_iterators())
-              AssertThrow(!face->at_boundary() ||
-                            face->boundary_id() != rim_boundary_id,
-                          ExcMessage("Mesh/File = " + file + ": boundary tag " +
-                                     std::to_string(rim_boundary_id) +
-                                     " is reserved with Mesh/Distribution = "
-                                     "distributed (the inner edges of a "
-                                     "rank's part)."));
-            GridTools::partition_triangulation(
-              n_ranks,
-              whole,
-              SparsityTools::Partitioner::metis);
-            owner.resize(whole.n_active_cells());
-            std::vector<unsigned int> n_owned(n_ranks, 0);
-            for (const auto &cell : whole.active_cell_iterators())
-              {
-                owner[cell->active_cell_index()] = cell->subdomain_id();
-                ++n_owned[cell->subdomain_id()];
-              }
-            // A rank without cells would hold an empty mesh.
-            AssertThrow(*std::min_element(n_owned.begin(), n_owned.end()) > 0,
-                        ExcMessage(
-                          "Mesh/Distribution = distributed: the mesh's " +
-                          std::to_string(whole.n_active_cells()) +
-                          " cells leave a rank of " + std::to_string(n_ranks) +
-                          " without cells of its own; use fewer ranks or "
-                          "Mesh/Distribution = replicated."));
-            for (unsigned int r = 0; r < n_ranks; ++r)
-              parts[r] = describe(whole, owner, r, ghost_layers, comm);
-          }
-        catch (const ExceptionBase &e)
-          {
-            std::ostringstream s;
-            e.print_info(s);
-            error = Utilities::trim(s.str());
-          }
-        catch (const std::exception &e)
-          {
-            error = e.what();
-          }
       // Every rank throws what rank 0 found: none waits for a part.
-      error = Utilities::MPI::broadcast(comm, error, 0);
-      AssertThrow(error.empty(), ExcMessage(error));
+      on_root_or_throw_everywhere(comm, [&]() {
+        Triangulation<dim> whole;
+        create(whole);
+        AssertThrow(whole.n_levels() == 1, ExcInternalError());
+        for (const auto &face : whole.active_face_iterators())
+          AssertThrow(!face->at_boundary() ||
+                        face->boundary_id() != rim_boundary_id,
+                      ExcMessage("Mesh/File = " + file + ": boundary tag " +
+                                 std::to_string(rim_boundary_id) +
+                                 " is reserved with Mesh/Distribution = "
+                                 "distributed (the inner edges of a "
+                                 "rank's part)."));
+        GridTools::partition_triangulation(n_ranks,
+                                           whole,
+                                           SparsityTools::Partitioner::metis);
+        owner.resize(whole.n_active_cells());
+        std::vector<unsigned int> n_owned(n_ranks, 0);
+        for (const auto &cell : whole.active_cell_iterators())
+          {
+            owner[cell->active_cell_index()] = cell->subdomain_id();
+            ++n_owned[cell->subdomain_id()];
+          }
+        // A rank without cells would hold an empty mesh.
+        AssertThrow(*std::min_element(n_owned.begin(), n_owned.end()) > 0,
+                    ExcMessage("Mesh/Distribution = distributed: the mesh's " +
+                               std::to_string(whole.n_active_cells()) +
+                               " cells leave a rank of " +
+                               std::to_string(n_ranks) +
+                               " without cells of its own; use fewer ranks or "
+                               "Mesh/Distribution = replicated."));
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          parts[r] = describe(whole, owner, r, ghost_layers, comm);
+      });
       names = Utilities::MPI::broadcast(comm, names, 0);
       owner = Utilities::MPI::broadcast(comm, owner, 0);
       Description mine;

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <psmpm/base/checked_file.h>
+#include <psmpm/base/root_errors.h>
 #include <psmpm/simulator/checkpoint.h>
 
 #include <algorithm>
@@ -419,30 +420,16 @@ namespace psmpm
                                   Particles::ParticleSet<dim>     &particles,
                                   MPI_Comm                         comm)
     {
-      const unsigned int          rank = Utilities::MPI::this_mpi_process(comm);
       Particles::ParticleSet<dim> all;
       all.set_state_names(particles.get_state_names());
-      std::string error;
-      if (rank == 0)
-        try
-          {
-            all.load(archive);
-            for (const unsigned int c : all.cell)
-              AssertThrow(c < cell_owner.size(),
-                          ExcMessage("entry 'particles/cell' holds cell " +
-                                     std::to_string(c) + " of a mesh with " +
-                                     std::to_string(cell_owner.size()) +
-                                     " cells"));
-          }
-        catch (const ExceptionBase &e)
-          {
-            error = e.get_exc_name();
-            std::ostringstream s;
-            e.print_info(s);
-            error = Utilities::trim(s.str());
-          }
-      error = Utilities::MPI::broadcast(comm, error, 0);
-      AssertThrow(error.empty(), ExcMessage(error));
+      on_root_or_throw_everywhere(comm, [&]() {
+        all.load(archive);
+        for (const unsigned int c : all.cell)
+          AssertThrow(c < cell_owner.size(),
+                      ExcMessage("entry 'particles/cell' holds cell " +
+                                 std::to_string(c) + " of a mesh with " +
+                                 std::to_string(cell_owner.size()) + " cells"));
+      });
 
       // A new set with the old state names: the material is the same.
       Particles::ParticleSet<dim> mine;
