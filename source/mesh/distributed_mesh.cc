@@ -17,6 +17,7 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <cstdint>
 #include <sstream>
 
 namespace psmpm
@@ -109,15 +110,14 @@ namespace psmpm
       const unsigned int                              ghost_layers) const
     {
       AssertThrow(ghost_layers == 1 || ghost_layers == 2, ExcInternalError());
-      using Description       = TriangulationDescription::Description<dim, dim>;
-      const MPI_Comm     comm = tria.get_communicator();
-      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-      std::map<unsigned int, Description> parts;
-      std::vector<unsigned int>           owner;
+      using Description = TriangulationDescription::Description<dim, dim>;
+      const MPI_Comm            comm = tria.get_communicator();
+      const unsigned int        rank = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int        n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      std::vector<unsigned int> owner;
+      Triangulation<dim>        whole;
       // Every rank throws what rank 0 found: none waits for a part.
       on_root_or_throw_everywhere(comm, [&]() {
-        Triangulation<dim> whole;
         create(whole);
         AssertThrow(whole.n_levels() == 1, ExcInternalError());
         for (const auto &face : whole.active_face_iterators())
@@ -146,20 +146,59 @@ namespace psmpm
                                std::to_string(n_ranks) +
                                " without cells of its own; use fewer ranks or "
                                "Mesh/Distribution = replicated."));
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          parts[r] = describe(whole, owner, r, ghost_layers, comm);
       });
       names = Utilities::MPI::broadcast(comm, names, 0);
       owner = Utilities::MPI::broadcast(comm, owner, 0);
-      Description mine;
+      // One part at a time: rank 0 holds the whole mesh and one
+      // description, not all of them (together about a second whole mesh).
+      // The size first, then chunks below MPI's int counts.
+      Description           mine;
+      const int             tag   = 4711;
+      constexpr std::size_t chunk = std::size_t(1) << 30;
       if (rank == 0)
         {
-          mine = std::move(parts[0]);
-          parts.erase(0);
+          for (unsigned int r = 1; r < n_ranks; ++r)
+            {
+              const std::vector<char> buffer =
+                Utilities::pack(describe(whole, owner, r, ghost_layers, comm),
+                                false);
+              const std::uint64_t size = buffer.size();
+              int ierr = MPI_Send(&size, 1, MPI_UINT64_T, r, tag, comm);
+              AssertThrowMPI(ierr);
+              for (std::size_t k = 0; k < size; k += chunk)
+                {
+                  ierr = MPI_Send(buffer.data() + k,
+                                  static_cast<int>(std::min(chunk, size - k)),
+                                  MPI_CHAR,
+                                  r,
+                                  tag,
+                                  comm);
+                  AssertThrowMPI(ierr);
+                }
+            }
+          mine = describe(whole, owner, 0, ghost_layers, comm);
+          whole.clear();
         }
-      auto incoming = Utilities::MPI::some_to_some(comm, parts);
-      if (rank != 0)
-        mine = std::move(incoming.at(0));
+      else
+        {
+          std::uint64_t size = 0;
+          int           ierr =
+            MPI_Recv(&size, 1, MPI_UINT64_T, 0, tag, comm, MPI_STATUS_IGNORE);
+          AssertThrowMPI(ierr);
+          std::vector<char> buffer(size);
+          for (std::size_t k = 0; k < size; k += chunk)
+            {
+              ierr = MPI_Recv(buffer.data() + k,
+                              static_cast<int>(std::min(chunk, size - k)),
+                              MPI_CHAR,
+                              0,
+                              tag,
+                              comm,
+                              MPI_STATUS_IGNORE);
+              AssertThrowMPI(ierr);
+            }
+          mine = Utilities::unpack<Description>(buffer, false);
+        }
       tria.create_triangulation(mine);
       return owner;
     }
