@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/distributed/tria_base.h>
 
+#include <psmpm/mesh/held_cells.h>
 #include <psmpm/solver/cell_exchange.h>
 
 #include <algorithm>
@@ -27,25 +28,17 @@ namespace psmpm
       const auto partitioner =
         par->global_active_cell_index_partitioner().lock();
       const IndexSet &owned = partitioner->locally_owned_range();
-      // Owned cells mark their vertices; a cell touching a marked vertex
-      // is a neighbour (as in Mesh::HeldCells).
-      std::vector<bool> marked(tria.n_vertices(), false);
-      for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int v : cell->vertex_indices())
-            marked[cell->vertex_index(v)] = true;
+      // The owned cells and those sharing a vertex with one: the cells a
+      // rank holds per-cell data for.
+      Mesh::HeldCells held;
+      held.reinit(tria);
       IndexSet relevant(owned.size());
       relevant.add_indices(owned);
       std::vector<std::pair<types::global_cell_index, unsigned int>> cells;
       for (const auto &cell : tria.active_cell_iterators())
-        {
-          bool held = cell->is_locally_owned();
-          for (const unsigned int v : cell->vertex_indices())
-            held = held || marked[cell->vertex_index(v)];
-          if (held)
-            cells.emplace_back(cell->global_active_cell_index(),
-                               cell->active_cell_index());
-        }
+        if (held.slot(cell->active_cell_index()) != Mesh::HeldCells::invalid)
+          cells.emplace_back(cell->global_active_cell_index(),
+                             cell->active_cell_index());
       std::sort(cells.begin(), cells.end());
       for (const auto &c : cells)
         relevant.add_index(c.first);
@@ -62,8 +55,9 @@ namespace psmpm
       owned_values.resize(owned_cells.size());
     }
 
+    template <typename Number>
     void
-    CellExchange::owners_to_neighbours(double *values) const
+    CellExchange::copy_from_owners(Number *values) const
     {
       if (!active)
         return;
@@ -71,18 +65,19 @@ namespace psmpm
         owned_values[i] = values[owned_cells[i]];
       exchange.owned_to_relevant(owned_values.data(), relevant_values);
       for (std::size_t l = 0; l < relevant_cells.size(); ++l)
-        values[relevant_cells[l]] = relevant_values[l];
+        values[relevant_cells[l]] = static_cast<Number>(relevant_values[l]);
+    }
+
+    void
+    CellExchange::owners_to_neighbours(double *values) const
+    {
+      copy_from_owners(values);
     }
 
     void
     CellExchange::owners_to_neighbours(std::vector<int> &values) const
     {
-      if (!active)
-        return;
-      std::vector<double> copy(values.begin(), values.end());
-      owners_to_neighbours(copy.data());
-      for (const unsigned int c : relevant_cells)
-        values[c] = static_cast<int>(copy[c]);
+      copy_from_owners(values.data());
     }
 
     template void

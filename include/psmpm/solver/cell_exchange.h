@@ -50,6 +50,11 @@ namespace psmpm
       owners_to_neighbours(std::vector<int> &values) const;
 
     private:
+      /// Both overloads: the values go as doubles (0/1 flags exactly).
+      template <typename Number>
+      void
+      copy_from_owners(Number *values) const;
+
       GhostExchange exchange;
       bool          active = false;
       /// Active cell index of the i-th owned cell and of the l-th cell of
