@@ -15,6 +15,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
 
+#include <psmpm/base/mpi_session.h>
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/solver/l2_projection.h>
@@ -27,7 +28,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
   if (argc < 5)
     {
       std::cerr << "usage: " << argv[0]

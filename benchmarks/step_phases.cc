@@ -67,6 +67,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <psmpm/app/application.h>
+#include <psmpm/base/mpi_session.h>
 #include <psmpm/base/phase_timer.h>
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/simulator.h>
@@ -567,7 +568,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
 
   // Machine: 4 KiB (L1), 128 KiB (L2), 4 MiB (L3) and 64 MiB (memory) per
   // array.

@@ -9,6 +9,8 @@
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/mpi_session.h>
+
 #include <cmath>
 #include <fstream>
 #include <iomanip>

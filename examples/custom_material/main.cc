@@ -6,10 +6,11 @@
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/app/application.h>
+#include <psmpm/base/mpi_session.h>
 
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
   return psmpm::App::run(argc, argv, MPI_COMM_WORLD);
 }

@@ -16,7 +16,7 @@ struct Case
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::string                head = "set Output directory = bad_output\n";
   const std::vector<Case>          cases = {

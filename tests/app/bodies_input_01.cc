@@ -13,7 +13,7 @@
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   std::filesystem::remove_all("never");
   const std::string head =

@@ -11,7 +11,7 @@ namespace fs = std::filesystem;
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
   const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ofstream out(root ? "output" : "/dev/null");
   const std::vector<std::string> scene = {"--set",

@@ -90,7 +90,7 @@ same_datasets(const XdmfGrid &grid, const std::string &a, const std::string &b)
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   std::string                      screen, message;
   for (const std::string d : {"vtu", "hdf5", "hdf5_resumed", "blocked"})

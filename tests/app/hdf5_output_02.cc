@@ -88,7 +88,7 @@ same_particles(const std::string &h5, const psmpm::Archive &c, const bool exact)
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
   const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ofstream out(root ? "output" : "/dev/null");
   if (root)

@@ -18,7 +18,7 @@ run_quietly(const std::vector<std::string> &args, std::string &message)
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::string scene = std::string(psmpm::App::default_scene);
   std::mt19937      rng(2026);

@@ -34,7 +34,7 @@ clean(const std::string &message)
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::string                quick = "Time/End time=0.001";
 

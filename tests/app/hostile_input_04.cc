@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::vector<std::string>   base = {"--set",
                                            "Time/End time=0.0005",

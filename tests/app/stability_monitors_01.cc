@@ -8,7 +8,7 @@
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::vector<std::string>   free = {"Boundary conditions/Fixed x=",
                                            "Boundary conditions/Fixed y=",

@@ -15,7 +15,7 @@
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
   return run_test([]() {
     std::ofstream out("output");
     using namespace psmpm;

@@ -38,7 +38,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
   return run_test([comm]() {
     const unsigned int rank = Utilities::MPI::this_mpi_process(comm);

@@ -46,7 +46,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
 
   auto         rest = make_solver({"Initial conditions/Velocity=0; 0"});

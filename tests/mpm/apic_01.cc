@@ -128,7 +128,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   rotation(out, "powell-sabin", "lumped", true);
   rotation(out, "linear", "lumped", true);

@@ -87,7 +87,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::vector<Scene>         scenes = {
             {"rotation", "rotating_block.prm", {}, true},

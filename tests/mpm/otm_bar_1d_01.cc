@@ -18,7 +18,7 @@ using psmpm::Simulator::Simulator;
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::string                scene     = "prm/otm_bar_1d.prm";
   const double                     paper_otm = 3.8684, paper_mpm = 3.8693;

@@ -7,7 +7,7 @@
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const double                     thesis[2] = {3.70985e-04, 3.13639e-05};
   double                           error[2];

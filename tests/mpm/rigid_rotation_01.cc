@@ -38,7 +38,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const double rho = 1000, omega = 1, R2 = 0.5, end_time = 0.08;
   const double centripetal = rho * omega * omega * R2;

@@ -12,7 +12,7 @@
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::string prm = std::string(PSMPM_SOURCE_DIR) + "/prm/";
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {

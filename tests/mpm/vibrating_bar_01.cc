@@ -7,7 +7,7 @@
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const double                     thesis[2] = {1.80956e-04, 4.44076e-05};
   double                           error[2];

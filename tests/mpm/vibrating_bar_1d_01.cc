@@ -39,7 +39,7 @@ bar_error(const unsigned int blocks, const std::string &mass)
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   for (const std::string mass : {"consistent", "lumped"})
     {

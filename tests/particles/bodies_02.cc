@@ -64,7 +64,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const std::string                ring =
     std::string(PSMPM_SOURCE_DIR) + "/prm/geometry/ring.msh";

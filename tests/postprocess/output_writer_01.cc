@@ -373,7 +373,7 @@ check_particles(std::ostream &out)
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   return run_test([&] {
     ParameterHandler prm;

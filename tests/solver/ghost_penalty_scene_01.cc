@@ -61,7 +61,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   const double                     end_time = 0.2;
   for (const std::string type : {"consistent", "ghost penalty"})

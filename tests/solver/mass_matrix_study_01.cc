@@ -85,7 +85,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
   return run_test([]() {
     std::ofstream out("output");
 

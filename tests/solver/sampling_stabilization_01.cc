@@ -307,7 +307,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession                mpi(argc, argv);
   std::ofstream                    out("output");
   out << std::setprecision(3);
 

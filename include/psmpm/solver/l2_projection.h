@@ -7,6 +7,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <psmpm/basis/space.h>
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/postprocess/summary.h>
 
