@@ -210,13 +210,28 @@ namespace psmpm
     void
     StatisticsTable::write_text(std::ostream &out) const
     {
+      write_header(out);
+      write_rows(out, 0, n_rows());
+      out << std::flush;
+    }
+
+    void
+    StatisticsTable::write_header(std::ostream &out) const
+    {
       for (unsigned int j = 0; j < columns.size(); ++j)
         out << "# " << j + 1 << ": " << columns[j].name << '\n';
+    }
+
+    void
+    StatisticsTable::write_rows(std::ostream      &out,
+                                const unsigned int begin,
+                                const unsigned int end) const
+    {
       for (const auto &c : columns)
         c.format_pending();
-      const unsigned int n = n_rows();
+      const unsigned int n = std::min(end, n_rows());
       std::string        line;
-      for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int i = begin; i < n; ++i)
         {
           line.clear();
           for (const auto &c : columns)
@@ -231,7 +246,30 @@ namespace psmpm
           line += '\n';
           out << line;
         }
-      out << std::flush;
+    }
+
+    std::string
+    StatisticsTable::layout() const
+    {
+      for (const auto &c : columns)
+        c.format_pending();
+      const unsigned int n = n_rows();
+      std::string        result;
+      for (const auto &c : columns)
+        {
+          result += c.name;
+          result += c.scientific ? " e" : " f";
+          result +=
+            std::to_string(c.precision) + ' ' + std::to_string(c.width) + '\n';
+        }
+      for (const auto &c : columns)
+        if (c.kinds.size() != n)
+          {
+            for (const auto &d : columns)
+              result += std::to_string(d.kinds.size()) + ' ';
+            break;
+          }
+      return result;
     }
 
     namespace

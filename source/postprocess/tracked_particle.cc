@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace psmpm
 {
@@ -75,22 +76,32 @@ namespace psmpm
 
     template <int dim>
     void
-    TrackedParticle<dim>::write(const std::string &directory,
-                                MPI_Comm           comm) const
+    TrackedParticle<dim>::write(const std::string &directory, MPI_Comm comm)
     {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
-      write_atomically(
-        directory + "/tracked_particle.txt",
-        [&](std::ostream &out) {
-          out
-            << "# particle starting nearest to (" << point << "), id " << id
-            << ", component " << axis << "\n"
-            << "# time displacement velocity reference_displacement reference_velocity\n";
+      const std::string name = directory + "/tracked_particle.txt";
+      if (!file || file->name() != name)
+        file = std::make_unique<GrowingTextFile>(name);
+      std::ostringstream header;
+      header
+        << "# particle starting nearest to (" << point << "), id " << id
+        << ", component " << axis << "\n"
+        << "# time displacement velocity reference_displacement reference_velocity\n";
+      file->write(
+        header.str(),
+        history.size(),
+        [&](std::ostream &out) { out << header.str(); },
+        [&](std::ostream      &out,
+            const unsigned int begin,
+            const unsigned int end) {
           out.precision(10);
-          for (const auto &r : history)
-            out << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3] << ' '
-                << r[4] << '\n';
+          for (unsigned int i = begin; i < end; ++i)
+            {
+              const auto &r = history[i];
+              out << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3] << ' '
+                  << r[4] << '\n';
+            }
         });
     }
 

@@ -813,10 +813,18 @@ namespace psmpm
               statistics.set_scientific(c, true);
               statistics.set_precision(c, 8);
             }
-          write_atomically(output_directory + "/statistics.txt",
-                           [this](std::ostream &out) {
-                             statistics.write_text(out);
-                           });
+          const std::string file = output_directory + "/statistics.txt";
+          if (!statistics_file || statistics_file->name() != file)
+            statistics_file = std::make_unique<GrowingTextFile>(file);
+          statistics_file->write(
+            statistics.layout(),
+            statistics.n_rows(),
+            [this](std::ostream &out) { statistics.write_header(out); },
+            [this](std::ostream      &out,
+                   const unsigned int begin,
+                   const unsigned int end) {
+              statistics.write_rows(out, begin, end);
+            });
         }
     }
 

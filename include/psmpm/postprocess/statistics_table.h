@@ -57,9 +57,30 @@ namespace psmpm
       unsigned int
       n_rows() const;
 
-      /// The whole table, in the layout described above.
+      /// The whole table, in the layout described above: write_header(),
+      /// then write_rows() of every row.
       void
       write_text(std::ostream &out) const;
+
+      /// The column descriptions ("# j: name" lines).
+      void
+      write_header(std::ostream &out) const;
+
+      /// Rows [@p begin, @p end) (at most n_rows()).
+      void
+      write_rows(std::ostream      &out,
+                 const unsigned int begin,
+                 const unsigned int end) const;
+
+      /**
+       * What fixes the text of the rows written so far: the columns'
+       * names, formats and widths, and, where a column has fewer entries
+       * than the table has rows (its entries would fill rows that are
+       * already written), every column's length. GrowingTextFile appends
+       * new rows only while this stays equal.
+       */
+      std::string
+      layout() const;
 
       /// Every entry with its type and every column format (checkpoints).
       std::string

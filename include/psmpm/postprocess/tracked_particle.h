@@ -4,11 +4,13 @@
 #ifndef psmpm_postprocess_tracked_particle_h
 #define psmpm_postprocess_tracked_particle_h
 
+#include <psmpm/base/growing_text_file.h>
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/simulator/state.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,9 +41,9 @@ namespace psmpm
       void
       execute(const Simulator::State<dim> &state);
 
-      /// tracked_particle.txt in @p directory (rank 0).
+      /// tracked_particle.txt in @p directory (rank 0), appended to.
       void
-      write(const std::string &directory, MPI_Comm comm) const;
+      write(const std::string &directory, MPI_Comm comm);
 
       void
       fill_summary(Summary &summary) const;
@@ -58,6 +60,7 @@ namespace psmpm
       const unsigned int                 axis;
       std::uint64_t                      id = 0;
       std::vector<std::array<double, 5>> history;
+      std::unique_ptr<GrowingTextFile>   file;
       double                             velocity2     = 0;
       double                             displacement2 = 0;
     };

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <psmpm/base/growing_text_file.h>
 #include <psmpm/base/phase_timer.h>
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/particles/particle_generator.h>
@@ -314,11 +315,13 @@ namespace psmpm
       // Run record.
       std::string                  output_directory;
       Postprocess::StatisticsTable statistics;
-      PhaseTimer                   timer;
-      Status                       status           = Status::completed;
-      unsigned int                 failed_step      = 0;
-      double                       failed_time      = 0;
-      unsigned int                 total_iterations = 0;
+      /// statistics.txt, appended to at every output.
+      std::unique_ptr<GrowingTextFile> statistics_file;
+      PhaseTimer                       timer;
+      Status                           status           = Status::completed;
+      unsigned int                     failed_step      = 0;
+      double                           failed_time      = 0;
+      unsigned int                     total_iterations = 0;
       /// Multiples of Output/Time interval passed.
       unsigned int time_outputs = 0;
       /// The times at which the reference was advanced (checkpoints).
