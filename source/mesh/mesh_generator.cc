@@ -68,8 +68,12 @@ namespace psmpm
           "the parts (with Powell-Sabin two layers of ghost cells). Verified "
           "with Basis/Type = linear and powell-sabin, Transfer/"
           "Reconstruction = particles and the transfers on a fixed grid; "
-          "particles move at most into a neighbouring rank's cells per "
-          "step (the Courant number keeps them within a cell).");
+          "a particle must stay within its rank's cells and ghost layers "
+          "in one step. The automatic step (Time/Courant number) keeps "
+          "every particle within a cell; with a fixed Time/Time step, a "
+          "particle that moves further stops the run as unstable, naming "
+          "the particle and its rank, where the replicated mesh would "
+          "have found it.");
       }
       prm.leave_subsection();
     }

@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
 #include <psmpm/base/archive.h>
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/stability_monitor.h>
@@ -61,8 +63,17 @@ namespace psmpm
         {
           const Failure f = static_cast<Failure>(
             Utilities::MPI::max(static_cast<int>(failure), comm));
+          // The reason of the first rank that found this failure: on a
+          // distributed mesh, where a particle leaving a rank's cells is
+          // reported, it is often not rank 0, which writes summary.json.
+          const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+          const unsigned int first =
+            Utilities::MPI::min(failure == f ? rank : n_ranks, comm);
+          const std::string reason =
+            Utilities::MPI::broadcast(comm, failure_reason, first);
           if (!failed())
-            report(f, "instability on another MPI rank");
+            report(f, reason + " (on MPI rank " + std::to_string(first) + ")");
           failure = f;
           return true;
         }

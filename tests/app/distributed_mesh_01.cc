@@ -81,7 +81,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  psmpm::MPISession mpi(argc, argv);
   const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ofstream out(root ? "output" : "/dev/null");
 
@@ -169,6 +169,35 @@ main(int argc, char **argv)
       PSMPM_CHECK(out,
                   errors.find("without cells of its own") != std::string::npos);
       PSMPM_CHECK(out, !fs::exists("refused"));
+    }
+
+  // A fixed step that carries particles past a rank's ghost layers stops
+  // the run as unstable (exit 5), and summary.json, which rank 0 writes,
+  // names the particle even where another rank found it.
+  if (root)
+    fs::remove_all("too_far");
+  code = run_app(scene_args("column_collapse",
+                            {"Bodies/Body 1/Initial velocity=40; 0",
+                             "Time/Time step=0.004",
+                             "Time/End time=0.02",
+                             "Output/Interval=0",
+                             "Boundary conditions/Fixed x=",
+                             "Boundary conditions/Fixed y=",
+                             "Body force/Gravity=0, 0",
+                             "Mass matrix/Type=lumped",
+                             "Mesh/Distribution=distributed",
+                             "Output directory=too_far"}),
+                 screen,
+                 errors);
+  out << "a step past the ghost layers: exit code "
+      << Utilities::MPI::max(code, MPI_COMM_WORLD) << std::endl;
+  if (root)
+    {
+      std::ifstream     in("too_far/summary.json");
+      std::stringstream summary;
+      summary << in.rdbuf();
+      PSMPM_CHECK(out,
+                  summary.str().find("left the mesh") != std::string::npos);
     }
 
   // Refused: a basis whose functions reach past the ghost layers.
