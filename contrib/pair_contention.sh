@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Shared-resource ceiling for the two-rank target (reports, never fails):
+# the 980,000-particle throughput bar of contrib/mpi_scaling.sh (P1 lumped
+# unless BASIS/MASS say otherwise), STEPS steps, run once alone on core 0
+# and then twice at the same time, one process per core, with no MPI
+# between them. If the pair's runs are slower than the lone one, the two
+# cores share something (memory bandwidth, the host) that no change of
+# the communication can win back: 2 x alone / pair bounds what two ranks
+# can reach. Each round prints the loop wall times (summary.json
+# time_loop_s) and that bound.
+#
+#   [REPEATS=2] [STEPS=100] [BASIS=linear] [MASS=lumped] \
+#     bash contrib/pair_contention.sh [psmpm binary]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=${1:-build/psmpm}
+repeats=${REPEATS:-2}
+steps=${STEPS:-100}
+end_time=$(/usr/bin/python3 -c "print($steps * 1e-5)")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+run() { # core directory
+  taskset -c "$1" "$bin" prm/benchmark_throughput.prm \
+    --set "Basis/Type=${BASIS:-linear}" --set "Mass matrix/Type=${MASS:-lumped}" \
+    --set "Particles/Per block x=14" --set "Particles/Per block y=14" \
+    --set "Time/End time=$end_time" --set "Output/Interval=0" \
+    --set "Output directory=$2" > /dev/null
+}
+loop() {
+  /usr/bin/python3 -c "import json, sys; print('%.3f' % json.load(open(sys.argv[1]))['time_loop_s'])" "$1/summary.json"
+}
+echo "| round | alone s | pair, core 0 s | pair, core 1 s | 2 x alone / slower of pair |"
+echo "|---|---|---|---|---|"
+for r in $(seq "$repeats"); do
+  run 0 "$work/alone"
+  run 0 "$work/pair0" & run 1 "$work/pair1"; wait
+  a=$(loop "$work/alone"); p0=$(loop "$work/pair0"); p1=$(loop "$work/pair1")
+  bound=$(/usr/bin/python3 -c "print('%.2f' % (2 * $a / max($p0, $p1)))")
+  echo "| $r | $a | $p0 | $p1 | $bound |"
+  rm -rf "$work"/alone "$work"/pair0 "$work"/pair1
+done
