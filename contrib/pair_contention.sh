@@ -30,6 +30,7 @@ run() { # core directory
 loop() { # directory: loop wall s / run CPU s
   /usr/bin/python3 -c "import json, sys; u, s = map(float, open(sys.argv[2]).read().split()[-2:]); print('%.3f / %.2f' % (json.load(open(sys.argv[1]))['time_loop_s'], u + s))" "$1/summary.json" "$1.time"
 }
+bash contrib/machine.sh
 echo "| round | alone: loop wall s / run CPU s | pair, core 0 | pair, core 1 | 2 x alone / slower of pair (loop wall) |"
 echo "|---|---|---|---|---|"
 for r in $(seq "$repeats"); do

@@ -4,14 +4,15 @@
 # Rows: P1 lumped and consistent, and the defaults (automatic) of both
 # bases on the closed bar (partially lumped, musl) and on the same bar
 # with free boundaries (P1: ghost penalty, musl; Powell-Sabin: lumped,
-# apic). Writes doc/data/throughput.tsv: particle-steps per second (wall
+# apic). Writes doc/data/throughput.tsv (or $OUT): particle-steps per second (wall
 # time of the time loop, per-step statistics included), CPU seconds of the whole run (user + sys, setup
 # included), peak memory and the TimerOutput breakdown from summary.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${PSMPM_BINARY:-build/psmpm}
-out=doc/data/throughput.tsv
-mkdir -p doc/data
+out=${OUT:-doc/data/throughput.tsv}
+mkdir -p "$(dirname "$out")"
+bash contrib/machine.sh
 printf "basis\tboundaries\tmass_matrix\ttransfer\tparticles\tsteps\tparticle_steps_per_s\tcpu_s\tmax_rss_mib\tlocate_s\tparticle_to_grid_s\tsolve_s\tgrid_to_particle_s\tupdate_s\tstatistics_s\ttime_loop_s\n" > $out
 run() { # basis mass transfer closed|free
   local dir extra=()
