@@ -49,7 +49,7 @@ run() { # basis mass ranks: prints "loop cpu checkpoint others steal"
     "$bin" prm/benchmark_throughput.prm --set "Basis/Type=$1" \
     --set "Mass matrix/Type=$2" --set "Particles/Per block x=14" \
     --set "Particles/Per block y=14" --set "Time/End time=$end_time" \
-    --set "Output directory=$dir" "${options[@]}" > /dev/null
+    --set "Output directory=$dir" "${options[@]}" > /dev/null || exit
   head -1 /proc/stat >> "$work/stat"
   /usr/bin/python3 -c "
 import json, sys
@@ -73,7 +73,8 @@ for basis in ${BASES:-linear:lumped powell-sabin:automatic}; do
   : > "$work/rows"
   for round in $(seq "$repeats"); do
     for ranks in $ranks_list; do
-      echo "$ranks $round $(run "$b" "$m" "$ranks")" >> "$work/rows"
+      row=$(run "$b" "$m" "$ranks") # a failed run stops the script (set -e)
+      echo "$ranks $round $row" >> "$work/rows"
     done
   done
   /usr/bin/python3 - "$work/rows" "$b, $m" "$cores" <<'PY'
