@@ -1241,6 +1241,17 @@ namespace psmpm
                       ExcMessage("checkpoint " + file + ": " +
                                  Utilities::trim(s.str())));
         }
+      // A checkpoint past the end asked for would run no step and end
+      // "completed" at the checkpoint's time, not at Time/End time.
+      const double end_time = time_step_control.get_end_time();
+      AssertThrow(!(end_time < state.time * (1 - 1e-12)),
+                  ExcMessage("checkpoint " + file +
+                             " is at t = " + prm_value(state.time) + " (step " +
+                             std::to_string(state.step) +
+                             "), after Time/End time = " + prm_value(end_time) +
+                             "; a resumed run continues from its checkpoint, "
+                             "so Time/End time must be at least " +
+                             prm_value(state.time) + "."));
       resumed_from = file;
       resumed_step = state.step;
       checkpoint.start(state.step);

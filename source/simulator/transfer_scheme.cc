@@ -7,6 +7,7 @@
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
+#include <psmpm/solver/solver_failure.h>
 
 namespace psmpm
 {
@@ -52,6 +53,13 @@ namespace psmpm
                              std::to_string(e.last_step) +
                              " iterations, residual " +
                              prm_value(e.last_residual) + ")");
+            return false;
+          }
+        catch (const Solver::SolverFailure &e)
+          {
+            monitor.report(Failure::solver,
+                           std::string("mass matrix solver failed: ") +
+                             e.what());
             return false;
           }
         return true;

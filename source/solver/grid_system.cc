@@ -16,6 +16,7 @@
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/solver/component_cg.h>
 #include <psmpm/solver/grid_system.h>
+#include <psmpm/solver/solver_failure.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
@@ -590,7 +591,19 @@ namespace psmpm
       for (unsigned int v = 0; v < pmg_coarse[d].m(); ++v)
         if (pmg_coarse[d].diag_element(v) == 0)
           pmg_coarse[d].diag_element(v) = 1;
-      pmg_coarse_direct[d].initialize(pmg_coarse[d]);
+      // A particle layout that leaves the P1 level rank deficient (two
+      // particles in a bar of 24 DoFs) makes UMFPACK fail. That is the
+      // layout's fault, not a bug: no cycle this step, and
+      // solve_consistent() reports the solver's failure.
+      try
+        {
+          pmg_coarse_direct[d].initialize(pmg_coarse[d]);
+        }
+      catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
+        {
+          pmg[d].reset();
+          return;
+        }
 
       if (pmg_rebuild[d] || !pmg[d])
         {
@@ -1460,6 +1473,12 @@ namespace psmpm
         cg.solve(matrix[d], x, rhs, amg[d]);
       else if (parameters.preconditioner == "pmg")
         {
+          if (!pmg[d])
+            throw SolverFailure(
+              "the P1 coarse matrix of the p-multigrid preconditioner is "
+              "singular: the particles do not determine the P1 level (Mass "
+              "matrix/Preconditioner = pmg; block jacobi or more particles "
+              "per block)");
           // CG on the serial copy that the cycle smooths (the same
           // matrix), one V-cycle from zero per iteration.
           pmg_rhs.reinit(rhs.locally_owned_size(), true);

@@ -2,12 +2,13 @@
 // a checkpoint.h5.tmp left by a run killed while writing one does not stop
 // a resume from the last good checkpoint; a changed End time is allowed
 // (the run is extended), a changed Material/Density is refused naming the
-// entry; a damaged newest checkpoint is reported and the previous one
-// used; with every checkpoint damaged or not HDF5 at all, exit code 2
-// naming the files. A fresh run (without --resume) removes the old
-// checkpoints with the other files of the earlier run. Checkpoint/Wall
-// interval writes checkpoints by wall time; a checkpoint that cannot be
-// written ends the run with exit code 8 naming the file.
+// entry, and so is an End time before the checkpoint's time; a damaged newest
+// checkpoint is reported and the previous one used; with every checkpoint
+// damaged or not HDF5 at all, exit code 2 naming the files. A fresh run
+// (without --resume) removes the old checkpoints with the other files of the
+// earlier run. Checkpoint/Wall interval writes checkpoints by wall time; a
+// checkpoint that cannot be written ends the run with exit code 8 naming the
+// file.
 #include "../checkpoint_tests.h"
 
 namespace fs = std::filesystem;
@@ -91,6 +92,18 @@ main(int argc, char **argv)
                 std::string::npos);
   PSMPM_CHECK(out,
               message.find("run/checkpoint-00000015.h5") != std::string::npos);
+
+  // An End time before the checkpoint's time is refused, naming both and
+  // the file, and the finished run's summary stays as it was.
+  const std::string finished = read_file("run/summary.json");
+  code                       = run_app(with({"--resume"}), screen, message);
+  out << "resume with an End time before the checkpoint: exit code " << code
+      << std::endl;
+  PSMPM_CHECK(out,
+              message.find("run/checkpoint-00000015.h5 is at t = 0.00015 "
+                           "(step 15), after Time/End time = 0.0001") !=
+                std::string::npos);
+  PSMPM_CHECK(out, read_file("run/summary.json") == finished);
 
   // The newest checkpoint damaged: the previous one is used.
   damage("run/checkpoint-00000015.h5", 64);
