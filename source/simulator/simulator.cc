@@ -1241,10 +1241,13 @@ namespace psmpm
                       ExcMessage("checkpoint " + file + ": " +
                                  Utilities::trim(s.str())));
         }
-      // A checkpoint past the end asked for would run no step and end
-      // "completed" at the checkpoint's time, not at Time/End time.
+      // A checkpoint past the end asked for (by more than the sliver of
+      // round-off that snap() forgives at the end of a run) would run no
+      // step and end "completed" at the checkpoint's time, not at Time/End
+      // time.
       const double end_time = time_step_control.get_end_time();
-      AssertThrow(!(end_time < state.time * (1 - 1e-12)),
+      AssertThrow(!(state.time > end_time &&
+                    time_step_control.snap(state.time) != end_time),
                   ExcMessage("checkpoint " + file +
                              " is at t = " + prm_value(state.time) + " (step " +
                              std::to_string(state.step) +
