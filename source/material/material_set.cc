@@ -137,15 +137,28 @@ namespace psmpm
     MaterialSet<dim>::for_each_run(const Particles::ParticleSet<dim> &particles,
                                    const F                           &f) const
     {
-      const std::size_t n = particles.size();
+      for_each_run(particles, 0, particles.size(), f);
+    }
+
+
+
+    template <int dim>
+    template <typename F>
+    void
+    MaterialSet<dim>::for_each_run(const Particles::ParticleSet<dim> &particles,
+                                   const std::size_t                  first,
+                                   const std::size_t                  last,
+                                   const F                           &f) const
+    {
+      const std::size_t n = last;
       if (instances.size() == 1)
         {
-          if (n > 0)
-            f(*instances[0], offsets[0], 0, n);
+          if (first < n)
+            f(*instances[0], offsets[0], first, n);
           return;
         }
       const auto &body = particles.body_id;
-      for (std::size_t begin = 0; begin < n;)
+      for (std::size_t begin = first; begin < n;)
         {
           std::size_t end = begin + 1;
           while (end < n && body[end] == body[begin])
@@ -179,21 +192,25 @@ namespace psmpm
     template <int dim>
     void
     MaterialSet<dim>::update(Particles::ParticleSet<dim> &particles,
+                             const std::size_t            first,
+                             const std::size_t            last,
                              const Tensor<2, dim>        *dL,
                              double                      *volume_ratio) const
     {
       double                  *state  = particles.state.data();
       SymmetricTensor<2, dim> *stress = particles.stress.data();
       for_each_run(particles,
+                   first,
+                   last,
                    [&](const Material<dim> &m,
                        const unsigned int   offset,
                        const std::size_t    begin,
                        const std::size_t    end) {
                      m.update(end - begin,
-                              dL + begin,
+                              dL + (begin - first),
                               stress + begin,
                               state + begin * stride + offset,
-                              volume_ratio + begin);
+                              volume_ratio + (begin - first));
                    });
     }
 
@@ -203,10 +220,14 @@ namespace psmpm
     void
     MaterialSet<dim>::energy_density(
       const Particles::ParticleSet<dim> &particles,
+      const std::size_t                  first,
+      const std::size_t                  last,
       double                            *energy) const
     {
       const double *state = particles.state.data();
       for_each_run(particles,
+                   first,
+                   last,
                    [&](const Material<dim> &m,
                        const unsigned int   offset,
                        const std::size_t    begin,
@@ -214,7 +235,7 @@ namespace psmpm
                      m.energy_density(end - begin,
                                       particles.stress.data() + begin,
                                       state + begin * stride + offset,
-                                      energy + begin);
+                                      energy + (begin - first));
                    });
     }
 

@@ -11,24 +11,48 @@ namespace psmpm
     Energies<dim>
     EnergyStatistics<dim>::compute(const Simulator::State<dim> &state) const
     {
-      const auto &particles = state.particles;
-      Particles::resize_per_particle(energy_density, particles);
-      state.materials.energy_density(particles, energy_density.data());
       Energies<dim> e;
-      for (std::size_t p = 0; p < particles.size(); ++p)
+      accumulate(state, 0, state.particles.size(), e);
+      return reduce(e, state.comm);
+    }
+
+    template <int dim>
+    void
+    EnergyStatistics<dim>::accumulate(const Simulator::State<dim> &state,
+                                      const std::size_t            first,
+                                      const std::size_t            last,
+                                      Energies<dim>               &e) const
+    {
+      const auto &particles = state.particles;
+      for (std::size_t begin = first; begin < last; begin += chunk)
         {
-          const double m = particles.mass[p];
-          e.kinetic += 0.5 * m * particles.velocity[p].norm_square();
-          e.strain += particles.volume[p] * energy_density[p];
-          e.gravity -= m * (state.gravity * particles.displacement[p]);
-          e.momentum += m * particles.velocity[p];
-          e.mass += m;
+          const std::size_t end = std::min(last, begin + chunk);
+          state.materials.energy_density(particles,
+                                         begin,
+                                         end,
+                                         energy_density.data());
+          for (std::size_t p = begin; p < end; ++p)
+            {
+              const double m = particles.mass[p];
+              e.kinetic += 0.5 * m * particles.velocity[p].norm_square();
+              e.strain += particles.volume[p] * energy_density[p - begin];
+              e.gravity -= m * (state.gravity * particles.displacement[p]);
+              e.momentum += m * particles.velocity[p];
+              e.mass += m;
+            }
         }
-      e.kinetic  = Utilities::MPI::sum(e.kinetic, state.comm);
-      e.strain   = Utilities::MPI::sum(e.strain, state.comm);
-      e.gravity  = Utilities::MPI::sum(e.gravity, state.comm);
-      e.mass     = Utilities::MPI::sum(e.mass, state.comm);
-      e.momentum = Utilities::MPI::sum(e.momentum, state.comm);
+    }
+
+    template <int dim>
+    Energies<dim>
+    EnergyStatistics<dim>::reduce(const Energies<dim> &local, MPI_Comm comm)
+    {
+      Energies<dim> e;
+      e.kinetic  = Utilities::MPI::sum(local.kinetic, comm);
+      e.strain   = Utilities::MPI::sum(local.strain, comm);
+      e.gravity  = Utilities::MPI::sum(local.gravity, comm);
+      e.mass     = Utilities::MPI::sum(local.mass, comm);
+      e.momentum = Utilities::MPI::sum(local.momentum, comm);
       return e;
     }
 

@@ -19,16 +19,19 @@ namespace psmpm
     RotationStatistics<dim>::compute(const Simulator::State<dim> &state,
                                      const bool                   affine_part)
     {
-      if constexpr (dim == 1)
-        {
-          (void)state;
-          (void)affine_part;
-          return {};
-        }
-      else
+      prepare(state);
+      Sums sums;
+      accumulate(state, 0, state.particles.size(), affine_part, sums);
+      return finish(sums, state.comm);
+    }
+
+    template <int dim>
+    void
+    RotationStatistics<dim>::prepare(const Simulator::State<dim> &state)
+    {
+      if constexpr (dim == 2)
         {
           const auto &particles = state.particles;
-          MPI_Comm    comm      = state.comm;
           if (!initialized)
             {
               double       mass = 0;
@@ -38,8 +41,8 @@ namespace psmpm
                   mass += particles.mass[p];
                   first += particles.mass[p] * particles.initial_position[p];
                 }
-              mass   = Utilities::MPI::sum(mass, comm);
-              first  = Utilities::MPI::sum(first, comm);
+              mass   = Utilities::MPI::sum(mass, state.comm);
+              first  = Utilities::MPI::sum(first, state.comm);
               centre = Point<2>(first / mass);
             }
           if (!have_control_points)
@@ -52,7 +55,19 @@ namespace psmpm
                 control_points[l] = all[global[l]];
               have_control_points = true;
             }
+        }
+    }
 
+    template <int dim>
+    void
+    RotationStatistics<dim>::accumulate(const Simulator::State<dim> &state,
+                                        const std::size_t            first_p,
+                                        const std::size_t            last_p,
+                                        const bool affine_part,
+                                        Sums      &sums) const
+    {
+      if constexpr (dim == 2)
+        {
           // One pass over the particles and one reduction (these
           // statistics run every step; on large scenes they cost as much
           // as a particle loop). The angle's sums are about the current
@@ -62,24 +77,23 @@ namespace psmpm
           // s = c(t) - c,
           // and the same for the dot product (sum m r0 is zero up to
           // round-off: the second terms are round-off corrections).
-          const unsigned int  n    = state.grid->dofs_per_cell;
-          const unsigned int *dofs = state.grid->cell_dofs().data();
+          const auto         &particles = state.particles;
+          const unsigned int  n         = state.grid->dofs_per_cell;
+          const unsigned int *dofs      = state.grid->cell_dofs().data();
           const bool          affine =
             affine_part && control_points.size() ==
                              state.grid->relevant_global_indices().size();
-          double       h = 0, along = 0, across = 0, s = 0, mass = 0;
-          Tensor<1, 2> first, first_r0;
-          for (std::size_t p = 0; p < particles.size(); ++p)
+          for (std::size_t p = first_p; p < last_p; ++p)
             {
               const double        m  = particles.mass[p];
               const Point<2>     &x  = particles.position[p];
               const Tensor<1, 2>  r  = x - centre;
               const Tensor<1, 2>  r0 = particles.initial_position[p] - centre;
               const Tensor<1, 2> &v  = particles.velocity[p];
-              h += m * cross(r, v);
+              sums.h += m * cross(r, v);
               // The scale is only needed once (two square roots).
               if (!initialized)
-                s += m * r.norm() * v.norm();
+                sums.s += m * r.norm() * v.norm();
               // C is read only where affine (binding the reference reads
               // nothing).
               const Tensor<2, 2> &C = particles.affine[p];
@@ -91,24 +105,47 @@ namespace psmpm
                   for (unsigned int k = 0; k < n; ++k)
                     {
                       const Tensor<1, 2> d = control_points[dofs[base + k]] - x;
-                      h += m * phi[k] * cross(d, C * d);
+                      sums.h += m * phi[k] * cross(d, C * d);
                     }
                 }
-              mass += m;
-              first += m * x;
-              first_r0 += m * r0;
-              across += m * cross(r0, r);
-              along += m * (r0 * r);
+              sums.mass += m;
+              sums.first += m * x;
+              sums.first_r0 += m * r0;
+              sums.across += m * cross(r0, r);
+              sums.along += m * (r0 * r);
             }
-          double sums[9] = {h,
-                            across,
-                            along,
-                            s,
-                            mass,
-                            first[0],
-                            first[1],
-                            first_r0[0],
-                            first_r0[1]};
+        }
+      else
+        {
+          (void)state;
+          (void)first_p;
+          (void)last_p;
+          (void)affine_part;
+          (void)sums;
+        }
+    }
+
+    template <int dim>
+    typename RotationStatistics<dim>::Values
+    RotationStatistics<dim>::finish(const Sums &local, MPI_Comm comm)
+    {
+      if constexpr (dim == 1)
+        {
+          (void)local;
+          (void)comm;
+          return {};
+        }
+      else
+        {
+          double sums[9] = {local.h,
+                            local.across,
+                            local.along,
+                            local.s,
+                            local.mass,
+                            local.first[0],
+                            local.first[1],
+                            local.first_r0[0],
+                            local.first_r0[1]};
           Utilities::MPI::sum(ArrayView<const double>(sums, 9),
                               comm,
                               ArrayView<double>(sums, 9));

@@ -32,7 +32,8 @@ namespace psmpm
         Tensor<1, dim>    *rhs        = cells.rhs.data();
         for (std::size_t p = 0; p < particles.size(); ++p)
           {
-            const unsigned int             base = particles.cell[p] * n;
+            const unsigned int             cell = particles.cell[p];
+            const unsigned int             base = cell * n;
             const double                   m    = particles.mass[p];
             const SymmetricTensor<2, dim> &s    = particles.stress[p];
             // Forces alone: no 0 * v term (which would carry a non-finite
@@ -49,7 +50,7 @@ namespace psmpm
                                  volume,
                                  s,
                                  &state.shape_values[p * n],
-                                 &state.shape_gradients[p * n],
+                                 state.gradients(p, cell),
                                  lumped + base,
                                  consistent ? mass_mat + base * n : nullptr,
                                  rhs + base);
@@ -95,16 +96,32 @@ namespace psmpm
       void
       move_particles(State<dim> &state, std::vector<Tensor<2, dim>> &increments)
       {
+        Particles::resize_per_particle(increments, state.particles);
+        move_particles<dim, velocity_update>(state,
+                                             0,
+                                             state.particles.size(),
+                                             increments.data());
+      }
+
+
+
+      template <int dim, VelocityUpdate velocity_update>
+      void
+      move_particles(State<dim>       &state,
+                     const std::size_t first,
+                     const std::size_t last,
+                     Tensor<2, dim>   *increments)
+      {
         auto               &particles = state.particles;
         const unsigned int *dofs      = state.grid->cell_dofs().data();
         const double        dt        = state.dt;
-        Particles::resize_per_particle(increments, particles);
         with_functions_per_cell(state.grid->dofs_per_cell, [&](const auto n) {
-          for (std::size_t p = 0; p < particles.size(); ++p)
+          for (std::size_t p = first; p < last; ++p)
             {
-              const unsigned int    base = particles.cell[p] * n;
+              const unsigned int    cell = particles.cell[p];
+              const unsigned int    base = cell * n;
               const double         *phi  = &state.shape_values[p * n];
-              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
+              const Tensor<1, dim> *grad = state.gradients(p, cell);
               Tensor<1, dim>        v, a;
               Tensor<2, dim>        L; // velocity gradient, L_ij = dv_i/dx_j
               for (unsigned int k = 0; k < n; ++k)
@@ -123,7 +140,7 @@ namespace psmpm
               // OTM: sum_a x_a,k+1 N_a,k(x_p) = x_p + dt sum_a u_a N_a,k(x_p)
               // (the functions reproduce x); the increment form keeps the
               // round-off relative to the step.
-              increments[p]           = dt * L;
+              increments[p - first]   = dt * L;
               const Tensor<1, dim> du = dt * v;
               particles.displacement[p] += du;
               particles.position[p] += du;
@@ -159,6 +176,36 @@ namespace psmpm
       template void
       move_particles<2, VelocityUpdate::grid>(State<2> &,
                                               std::vector<Tensor<2, 2>> &);
+      template void
+      move_particles<1, VelocityUpdate::keep>(State<1> &,
+                                              const std::size_t,
+                                              const std::size_t,
+                                              Tensor<2, 1> *);
+      template void
+      move_particles<1, VelocityUpdate::flip>(State<1> &,
+                                              const std::size_t,
+                                              const std::size_t,
+                                              Tensor<2, 1> *);
+      template void
+      move_particles<1, VelocityUpdate::grid>(State<1> &,
+                                              const std::size_t,
+                                              const std::size_t,
+                                              Tensor<2, 1> *);
+      template void
+      move_particles<2, VelocityUpdate::keep>(State<2> &,
+                                              const std::size_t,
+                                              const std::size_t,
+                                              Tensor<2, 2> *);
+      template void
+      move_particles<2, VelocityUpdate::flip>(State<2> &,
+                                              const std::size_t,
+                                              const std::size_t,
+                                              Tensor<2, 2> *);
+      template void
+      move_particles<2, VelocityUpdate::grid>(State<2> &,
+                                              const std::size_t,
+                                              const std::size_t,
+                                              Tensor<2, 2> *);
     } // namespace ParticleLoops
   }   // namespace Simulator
 } // namespace psmpm

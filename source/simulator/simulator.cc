@@ -679,6 +679,8 @@ namespace psmpm
     Simulator<dim>::do_time_step(const double dt)
     {
       state.dt = dt;
+      transfer->observe_updated_chunks(transfer->carries_affine() ? nullptr :
+                                                                    &step_sums);
       if (!transfer->step(state, monitor, timer))
         return;
       total_iterations += state.grid->statistics().iterations;
@@ -725,15 +727,14 @@ namespace psmpm
     Simulator<dim>::postprocess(const double wall_time)
     {
       PhaseTimer::Scope t(timer, "statistics");
-      const auto        e  = compute_energies();
-      const auto       &gs = state.grid->statistics();
+      const auto [e, rotation] =
+        step_sums.compute(state, transfer->carries_affine());
+      const auto &gs = state.grid->statistics();
       statistics.add_value("step", state.step);
       statistics.add_value("time", state.time);
       statistics.add_value("dt", state.dt);
       Postprocess::EnergyStatistics<dim>::add_columns(e, statistics);
-      rotation_statistics.add_columns(
-        rotation_statistics.compute(state, transfer->carries_affine()),
-        statistics);
+      rotation_statistics.add_columns(rotation, statistics);
       Postprocess::BodyStatistics<dim>::add_columns(state, statistics);
       statistics.add_value("cg_iterations", gs.iterations);
       statistics.add_value("condition_number", gs.condition_number);

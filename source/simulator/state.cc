@@ -50,13 +50,30 @@ namespace psmpm
     State<dim>::evaluate_shape_functions()
     {
       const unsigned int n = space->dofs_per_cell();
+      functions_per_cell   = n;
+      gradients_per_cell   = space->gradients_constant_on_cells();
       Particles::resize_per_particle(shape_values, particles, n);
-      Particles::resize_per_particle(shape_gradients, particles, n);
+      if (gradients_per_cell)
+        {
+          // Every cell's gradients, evaluated anywhere (they are constant
+          // there): a few per cent of the particle work on the scenes
+          // where P1 runs have more than a few particles per cell.
+          const unsigned int n_cells = triangulation->n_active_cells();
+          shape_gradients.resize(std::size_t(n_cells) * n);
+          cell_values.resize(n);
+          for (unsigned int c = 0; c < n_cells; ++c)
+            space->evaluate(c,
+                            Point<dim>(),
+                            cell_values.data(),
+                            shape_gradients.data() + std::size_t(c) * n);
+        }
+      else
+        Particles::resize_per_particle(shape_gradients, particles, n);
       space->evaluate(particles.size(),
                       particles.cell.data(),
                       particles.position.data(),
                       shape_values.data(),
-                      shape_gradients.data());
+                      gradients_per_cell ? nullptr : shape_gradients.data());
     }
 
     template struct State<1>;

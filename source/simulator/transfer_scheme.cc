@@ -147,13 +147,30 @@ namespace psmpm
       std::vector<double>               &volume_ratio,
       StabilityMonitor                  &monitor)
     {
+      Particles::resize_per_particle(volume_ratio, state.particles);
+      update_material(state,
+                      0,
+                      state.particles.size(),
+                      increments.data(),
+                      volume_ratio.data(),
+                      monitor);
+    }
+
+    template <int dim>
+    void
+    TransferScheme<dim>::update_material(State<dim>           &state,
+                                         const std::size_t     first,
+                                         const std::size_t     last,
+                                         const Tensor<2, dim> *increments,
+                                         double               *volume_ratio,
+                                         StabilityMonitor     &monitor)
+    {
       auto &particles = state.particles;
-      Particles::resize_per_particle(volume_ratio, particles);
-      state.materials.update(particles, increments.data(), volume_ratio.data());
-      for (std::size_t p = 0; p < particles.size(); ++p)
+      state.materials.update(particles, first, last, increments, volume_ratio);
+      for (std::size_t p = first; p < last; ++p)
         {
-          particles.volume[p] *= volume_ratio[p];
-          particles.density[p] /= volume_ratio[p];
+          particles.volume[p] *= volume_ratio[p - first];
+          particles.density[p] /= volume_ratio[p - first];
           if (!(particles.volume[p] > 0))
             monitor.report(Failure::non_positive_volume,
                            "non-positive particle volume (particle " +
@@ -161,7 +178,43 @@ namespace psmpm
         }
     }
 
+    template <int dim>
+    template <ParticleLoops::VelocityUpdate velocity_update>
+    void
+    TransferScheme<dim>::move_and_update_material(State<dim>       &state,
+                                                  StabilityMonitor &monitor)
+    {
+      const std::size_t n = state.particles.size();
+      for (std::size_t first = 0; first < n; first += chunk)
+        {
+          const std::size_t last = std::min(n, first + chunk);
+          ParticleLoops::move_particles<dim, velocity_update>(
+            state,
+            first,
+            last,
+            chunk_increments.data());
+          update_material(state,
+                          first,
+                          last,
+                          chunk_increments.data(),
+                          chunk_volume_ratio.data(),
+                          monitor);
+          if (chunk_observer != nullptr)
+            chunk_observer->updated(state, first, last);
+        }
+    }
+
     template class TransferScheme<1>;
     template class TransferScheme<2>;
+#define PSMPM_INSTANTIATE(DIM, UPDATE)                         \
+  template void TransferScheme<DIM>::move_and_update_material< \
+    ParticleLoops::VelocityUpdate::UPDATE>(State<DIM> &, StabilityMonitor &);
+    PSMPM_INSTANTIATE(1, keep)
+    PSMPM_INSTANTIATE(2, keep)
+    PSMPM_INSTANTIATE(1, flip)
+    PSMPM_INSTANTIATE(2, flip)
+    PSMPM_INSTANTIATE(1, grid)
+    PSMPM_INSTANTIATE(2, grid)
+#undef PSMPM_INSTANTIATE
   } // namespace Simulator
 } // namespace psmpm

@@ -58,6 +58,12 @@ namespace psmpm
                double             *values,
                Tensor<1, dim>     *gradients) const override;
 
+      bool
+      gradients_constant_on_cells() const override
+      {
+        return true;
+      }
+
       /// u = g(V) at every vertex V of the boundaries @p ids.
       void
       make_dirichlet_constraints(

@@ -116,6 +116,18 @@ namespace psmpm
                Tensor<1, dim>     *gradients) const;
 
       /**
+       * Whether the gradients of every function are constant on each
+       * cell (P1). The particle loops then read them once per cell
+       * instead of once per particle (State::gradients()), which saves
+       * the per-particle gradient array and its traffic in every step.
+       */
+      virtual bool
+      gradients_constant_on_cells() const
+      {
+        return false;
+      }
+
+      /**
        * Constraints that belong to the space itself, not to boundary
        * conditions: the ties that make the DoF layout's functions span the
        * space (bspline: C1 at the interior vertices of a C0 quadratic

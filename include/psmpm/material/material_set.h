@@ -116,15 +116,21 @@ namespace psmpm
       void
       initialize(Particles::ParticleSet<dim> &particles) const;
 
-      /// Material::update() for every particle.
+      /// Material::update() for the particles [@p first, @p last), whose
+      /// increments and volume ratios start at dL[0] and volume_ratio[0].
       void
       update(Particles::ParticleSet<dim> &particles,
+             const std::size_t            first,
+             const std::size_t            last,
              const Tensor<2, dim>        *dL,
              double                      *volume_ratio) const;
 
-      /// Material::energy_density() for every particle.
+      /// Material::energy_density() for the particles [@p first, @p last),
+      /// into energy[0 .. last - first).
       void
       energy_density(const Particles::ParticleSet<dim> &particles,
+                     const std::size_t                  first,
+                     const std::size_t                  last,
                      double                            *energy) const;
 
       /// Largest Material::max_wave_speed() over all particles.
@@ -137,6 +143,14 @@ namespace psmpm
       template <typename F>
       void
       for_each_run(const Particles::ParticleSet<dim> &particles,
+                   const F                           &f) const;
+
+      /// The same within the particles [@p first, @p last).
+      template <typename F>
+      void
+      for_each_run(const Particles::ParticleSet<dim> &particles,
+                   const std::size_t                  first,
+                   const std::size_t                  last,
                    const F                           &f) const;
 
       std::vector<std::unique_ptr<Material<dim>>> instances;

@@ -5,8 +5,9 @@
 #define psmpm_postprocess_energies_h
 
 #include <psmpm/postprocess/statistics_table.h>
-
 #include <psmpm/simulator/state.h>
+
+#include <array>
 
 namespace psmpm
 {
@@ -46,12 +47,28 @@ namespace psmpm
       Energies<dim>
       compute(const Simulator::State<dim> &state) const;
 
+      /// This rank's particles [@p first, @p last) added to the local
+      /// sums @p e, in particle order (compute() is accumulate() over all
+      /// particles, then reduce()).
+      void
+      accumulate(const Simulator::State<dim> &state,
+                 const std::size_t            first,
+                 const std::size_t            last,
+                 Energies<dim>               &e) const;
+
+      /// The sums of all ranks.
+      static Energies<dim>
+      reduce(const Energies<dim> &local, MPI_Comm comm);
+
       /// Columns kinetic_energy ... momentum_y of @p e.
       static void
       add_columns(const Energies<dim> &e, StatisticsTable &statistics);
 
     private:
-      mutable std::vector<double> energy_density; // scratch
+      /// Energy densities of a chunk of particles (scratch): computed and
+      /// summed while the chunk is in the cache.
+      static constexpr std::size_t      chunk = 512;
+      mutable std::array<double, chunk> energy_density;
     };
   } // namespace Postprocess
 } // namespace psmpm

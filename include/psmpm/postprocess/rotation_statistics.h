@@ -54,6 +54,36 @@ namespace psmpm
       compute(const Simulator::State<dim> &state,
               const bool                   affine_part = true);
 
+      /// This rank's sums, before the reduction.
+      struct Sums
+      {
+        double         h = 0, across = 0, along = 0, s = 0, mass = 0;
+        Tensor<1, dim> first, first_r0;
+      };
+
+      /// compute() in parts: prepare() (the initial centre and the
+      /// control points, collective the first time), accumulate() the
+      /// particles [@p first, @p last) in order, then finish() (the
+      /// reduction; initial and last values). compute() is the three for
+      /// all particles.
+      void
+      prepare(const Simulator::State<dim> &state);
+      void
+      accumulate(const Simulator::State<dim> &state,
+                 const std::size_t            first,
+                 const std::size_t            last,
+                 const bool                   affine_part,
+                 Sums                        &sums) const;
+      Values
+      finish(const Sums &sums, MPI_Comm comm);
+
+      /// Whether prepare() has nothing left to do (nothing collective).
+      bool
+      prepared() const
+      {
+        return initialized && have_control_points;
+      }
+
       void
       add_columns(const Values &values, StatisticsTable &statistics);
 

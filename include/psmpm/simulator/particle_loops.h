@@ -18,7 +18,7 @@ namespace psmpm
      * The particle loops of the transfer schemes, between the particles
      * and the per-cell arrays or grid fields of a State: one pass over
      * the particles each, reading the basis cache (state.shape_values,
-     * state.shape_gradients) and the cell DoFs. The schemes call them,
+     * state.gradients()) and the cell DoFs. The schemes call them,
      * and so does benchmarks/step_phases.cc, which times these very
      * loops. They allocate nothing per particle and call nothing virtual.
      */
@@ -70,6 +70,15 @@ namespace psmpm
       void
       move_particles(State<dim>                  &state,
                      std::vector<Tensor<2, dim>> &increments);
+
+      /// The same for the particles [@p first, @p last): the increment of
+      /// particle p goes to increments[p - first].
+      template <int dim, VelocityUpdate velocity_update>
+      void
+      move_particles(State<dim>       &state,
+                     const std::size_t first,
+                     const std::size_t last,
+                     Tensor<2, dim>   *increments);
     } // namespace ParticleLoops
   }   // namespace Simulator
 } // namespace psmpm

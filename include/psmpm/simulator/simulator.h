@@ -18,6 +18,7 @@
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/rotation_statistics.h>
 #include <psmpm/postprocess/statistics_table.h>
+#include <psmpm/postprocess/step_sums.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/postprocess/tracked_particle.h>
 #include <psmpm/simulator/checkpoint.h>
@@ -308,6 +309,9 @@ namespace psmpm
       std::unique_ptr<Postprocess::Reference<dim>>       reference;
       Postprocess::EnergyStatistics<dim>                 energy_statistics;
       Postprocess::RotationStatistics<dim>               rotation_statistics;
+      /// Their particle sums, collected during the transfer's update.
+      Postprocess::StepSums<dim> step_sums{energy_statistics,
+                                           rotation_statistics};
       std::unique_ptr<Postprocess::ErrorNorms<dim>>      error_norms;
       std::unique_ptr<Postprocess::TrackedParticle<dim>> tracked;
       std::unique_ptr<Postprocess::OutputWriter<dim>>    writer;

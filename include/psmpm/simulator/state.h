@@ -42,6 +42,21 @@ namespace psmpm
       void
       evaluate_shape_functions();
 
+      /**
+       * The dofs_per_cell() basis gradients at particle @p p, which lies
+       * in cell @p cell (the loops have read it already): one set per cell
+       * where the space's gradients are constant on cells (P1: 48 B per
+       * particle that evaluate_shape_functions() does not write and the
+       * particle loops do not read), one set per particle otherwise.
+       */
+      const Tensor<1, dim> *
+      gradients(const std::size_t p, const unsigned int cell) const
+      {
+        return shape_gradients.data() +
+               (gradients_per_cell ? std::size_t(cell) : p) *
+                 functions_per_cell;
+      }
+
       /// The rank's cell of index @p whole in the whole mesh (the identity
       /// on a replicated mesh), or numbers::invalid_unsigned_int.
       unsigned int
@@ -66,9 +81,13 @@ namespace psmpm
       /// rank's cells (increasing), and the owner of every cell of the
       /// whole mesh (checkpoints name cells by it). Empty when replicated.
       std::vector<unsigned int> whole_index, whole_owner;
-      /// Basis at the particles, dofs_per_cell per particle.
+      /// Basis at the particles, dofs_per_cell per particle; the
+      /// gradients per cell if gradients_per_cell (read them through
+      /// gradients()).
       std::vector<double>         shape_values;
       std::vector<Tensor<1, dim>> shape_gradients;
+      bool                        gradients_per_cell = false;
+      unsigned int                functions_per_cell = 0;
       /// Grid fields in local relevant numbering.
       std::vector<Tensor<1, dim>> grid_velocity;
       std::vector<Tensor<1, dim>> grid_acceleration;
@@ -76,6 +95,11 @@ namespace psmpm
       unsigned int                step = 0;
       /// Length of the step under way (0 before the first).
       double dt = 0;
+
+    private:
+      /// Scratch of evaluate_shape_functions() (kept: no allocation per
+      /// step).
+      std::vector<double> cell_values;
     };
   } // namespace Simulator
 } // namespace psmpm

@@ -9,13 +9,35 @@
 #include <psmpm/base/archive.h>
 #include <psmpm/base/phase_timer.h>
 #include <psmpm/base/registry.h>
+#include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
+
+#include <array>
 
 namespace psmpm
 {
   namespace Simulator
   {
+    /**
+     * Told of every chunk of particles whose update a scheme has finished
+     * in a step (positions, velocities, stresses and volumes final), in
+     * particle order from the first particle, while the chunk is still in
+     * the cache: the per-step statistics sum over the particles there
+     * instead of in a pass of their own (Postprocess::StepSums).
+     */
+    template <int dim>
+    class UpdatedChunkObserver
+    {
+    public:
+      virtual ~UpdatedChunkObserver() = default;
+
+      virtual void
+      updated(const State<dim> &state,
+              const std::size_t first,
+              const std::size_t last) = 0;
+    };
+
     /**
      * One MPM time step between particles and grid (subsection
      * "Transfer", entry "Scheme"): from the particles' mass, momentum and
@@ -112,6 +134,16 @@ namespace psmpm
       virtual bool
       step(State<dim> &state, StabilityMonitor &monitor, PhaseTimer &timer) = 0;
 
+      /// Tell @p observer (nullptr: nobody) of the chunks that
+      /// move_and_update_material() finishes; schemes that update their
+      /// particles otherwise tell nobody, and the observer sees an
+      /// incomplete step.
+      void
+      observe_updated_chunks(UpdatedChunkObserver<dim> *observer)
+      {
+        chunk_observer = observer;
+      }
+
     protected:
       /// state.grid->solve(@p solution), a CG failure reported to the
       /// monitor (returns false) instead of thrown.
@@ -154,6 +186,36 @@ namespace psmpm
                       const std::vector<Tensor<2, dim>> &increments,
                       std::vector<double>               &volume_ratio,
                       StabilityMonitor                  &monitor);
+
+      /// The same for the particles [@p first, @p last), whose increments
+      /// and volume ratios (scratch) start at @p increments[0] and
+      /// @p volume_ratio[0].
+      static void
+      update_material(State<dim>           &state,
+                      const std::size_t     first,
+                      const std::size_t     last,
+                      const Tensor<2, dim> *increments,
+                      double               *volume_ratio,
+                      StabilityMonitor     &monitor);
+
+      /**
+       * ParticleLoops::move_particles() and update_material() for every
+       * particle, a chunk of particles at a time: a chunk's strain
+       * increments and volume ratios stay in the L1 cache between the two
+       * loops instead of going through memory in arrays over all
+       * particles (80 B per particle and step; the same operations on
+       * every particle, so the same results).
+       */
+      template <ParticleLoops::VelocityUpdate velocity_update>
+      void
+      move_and_update_material(State<dim> &state, StabilityMonitor &monitor);
+
+    private:
+      /// 16 kB of increments in 2D: a chunk fits the L1 cache.
+      static constexpr std::size_t      chunk = 512;
+      std::array<Tensor<2, dim>, chunk> chunk_increments;
+      std::array<double, chunk>         chunk_volume_ratio;
+      UpdatedChunkObserver<dim>        *chunk_observer = nullptr;
     };
 
     template <int dim>

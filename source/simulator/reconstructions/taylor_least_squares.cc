@@ -628,7 +628,7 @@ namespace psmpm
                            stress_weight * particles.volume[p],
                            particles.stress[p],
                            &state.shape_values[p * n],
-                           &state.shape_gradients[p * n],
+                           state.gradients(p, cell),
                            &cells.lumped[base],
                            mass,
                            &cells.rhs[base]);

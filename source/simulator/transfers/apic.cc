@@ -279,7 +279,8 @@ namespace psmpm
               const SymmetricTensor<2, dim> &s    = particles.stress[p];
               const Tensor<1, dim> external = particles.mass[p] * state.gravity;
               const double        *phi      = &state.shape_values[p * n];
-              const Tensor<1, dim> *grad    = &state.shape_gradients[p * n];
+              const Tensor<1, dim> *grad =
+                state.gradients(p, particles.cell[p]);
               for (unsigned int k = 0; k < n; ++k)
                 rhs[base + k] += phi[k] * external - V * (s * grad[k]);
             }
@@ -395,7 +396,8 @@ namespace psmpm
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               const unsigned int    base = particles.cell[p] * n;
-              const Tensor<1, dim> *grad = &state.shape_gradients[p * n];
+              const Tensor<1, dim> *grad =
+                state.gradients(p, particles.cell[p]);
               Tensor<2, dim>        L; // L_ij = dv_i/dx_j
               for (unsigned int k = 0; k < n; ++k)
                 L +=

@@ -266,9 +266,8 @@ namespace psmpm
         {
           PhaseTimer::Scope t(timer, "update");
           // v_p = sum_a u_a N_a,k(x_p) = (x_p,k+1 - x_p,k) / dt_k.
-          using namespace ParticleLoops;
-          move_particles<dim, VelocityUpdate::grid>(state, increments);
-          this->update_material(state, increments, volume_ratio, monitor);
+          this->template move_and_update_material<
+            ParticleLoops::VelocityUpdate::grid>(state, monitor);
         }
 
         /// The moved grid, the last nodal velocity and step, by global DoF
@@ -325,11 +324,17 @@ namespace psmpm
               const auto &map = maps[particles.cell[p]];
               const auto  l   = map(particles.position[p]);
               for (unsigned int k = 0; k < n; ++k)
-                {
-                  state.shape_values[p * n + k]    = l[k];
+                state.shape_values[p * n + k] = l[k];
+              if (!state.gradients_per_cell)
+                for (unsigned int k = 0; k < n; ++k)
                   state.shape_gradients[p * n + k] = map.gradient[k];
-                }
             }
+          // P1 keeps its gradients per cell (State::gradients()).
+          if (state.gradients_per_cell)
+            for (const unsigned int c : occupied)
+              for (unsigned int k = 0; k < n; ++k)
+                state.shape_gradients[std::size_t(c) * n + k] =
+                  maps[c].gradient[k];
         }
 
         /// Measure ratio (moved over initial) below which a cell counts
@@ -347,9 +352,6 @@ namespace psmpm
         std::vector<double>                initial_measure;
         std::vector<Mesh::SimplexMap<dim>> maps;
         double                             previous_dt = 0;
-        // Per-step scratch.
-        std::vector<Tensor<2, dim>> increments;
-        std::vector<double>         volume_ratio;
       };
     } // namespace
 

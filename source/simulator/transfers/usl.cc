@@ -48,14 +48,9 @@ namespace psmpm
                          PhaseTimer       &timer)
         {
           PhaseTimer::Scope t(timer, "update");
-          using namespace ParticleLoops;
-          move_particles<dim, VelocityUpdate::flip>(state, increments);
-          this->update_material(state, increments, volume_ratio, monitor);
+          this->template move_and_update_material<
+            ParticleLoops::VelocityUpdate::flip>(state, monitor);
         }
-
-        // Per-step scratch, kept to avoid reallocation.
-        std::vector<Tensor<2, dim>> increments;
-        std::vector<double>         volume_ratio;
       };
     } // namespace
 
