@@ -158,54 +158,21 @@ namespace psmpm
       accelerate_particles(State<1> &, const bool);
       template void
       accelerate_particles(State<2> &, const bool);
-      template void
-      move_particles<1, VelocityUpdate::keep>(State<1> &,
-                                              std::vector<Tensor<2, 1>> &);
-      template void
-      move_particles<2, VelocityUpdate::keep>(State<2> &,
-                                              std::vector<Tensor<2, 2>> &);
-      template void
-      move_particles<1, VelocityUpdate::flip>(State<1> &,
-                                              std::vector<Tensor<2, 1>> &);
-      template void
-      move_particles<2, VelocityUpdate::flip>(State<2> &,
-                                              std::vector<Tensor<2, 2>> &);
-      template void
-      move_particles<1, VelocityUpdate::grid>(State<1> &,
-                                              std::vector<Tensor<2, 1>> &);
-      template void
-      move_particles<2, VelocityUpdate::grid>(State<2> &,
-                                              std::vector<Tensor<2, 2>> &);
-      template void
-      move_particles<1, VelocityUpdate::keep>(State<1> &,
-                                              const std::size_t,
-                                              const std::size_t,
-                                              Tensor<2, 1> *);
-      template void
-      move_particles<1, VelocityUpdate::flip>(State<1> &,
-                                              const std::size_t,
-                                              const std::size_t,
-                                              Tensor<2, 1> *);
-      template void
-      move_particles<1, VelocityUpdate::grid>(State<1> &,
-                                              const std::size_t,
-                                              const std::size_t,
-                                              Tensor<2, 1> *);
-      template void
-      move_particles<2, VelocityUpdate::keep>(State<2> &,
-                                              const std::size_t,
-                                              const std::size_t,
-                                              Tensor<2, 2> *);
-      template void
-      move_particles<2, VelocityUpdate::flip>(State<2> &,
-                                              const std::size_t,
-                                              const std::size_t,
-                                              Tensor<2, 2> *);
-      template void
-      move_particles<2, VelocityUpdate::grid>(State<2> &,
-                                              const std::size_t,
-                                              const std::size_t,
-                                              Tensor<2, 2> *);
+#define PSMPM_INSTANTIATE(DIM, UPDATE)                                         \
+  template void move_particles<DIM, VelocityUpdate::UPDATE>(                   \
+    State<DIM> &,                                                              \
+    std::vector<Tensor<2, DIM>> &);                                            \
+  template void move_particles<DIM, VelocityUpdate::UPDATE>(State<DIM> &,      \
+                                                            const std::size_t, \
+                                                            const std::size_t, \
+                                                            Tensor<2, DIM> *);
+      PSMPM_INSTANTIATE(1, keep)
+      PSMPM_INSTANTIATE(2, keep)
+      PSMPM_INSTANTIATE(1, flip)
+      PSMPM_INSTANTIATE(2, flip)
+      PSMPM_INSTANTIATE(1, grid)
+      PSMPM_INSTANTIATE(2, grid)
+#undef PSMPM_INSTANTIATE
     } // namespace ParticleLoops
   }   // namespace Simulator
 } // namespace psmpm
