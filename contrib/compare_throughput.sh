@@ -15,12 +15,14 @@
 # bandwidth (check with contrib/pair_contention.sh first).
 # Columns: particle-steps per second and wall seconds of the time loop
 # (summary.json), CPU seconds (user + system) and wall seconds of the
-# whole process, peak RSS, the core.
+# whole process, peak RSS, the core, then the loop's phases (summary.json
+# timers_s: locate, particle to grid, solve, grid to particle, update,
+# statistics).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 old=$1; new=$2; reps=${3:-3}; steps=${4:-100}
 end=$(/usr/bin/python3 -c "print($steps * 1e-5)")
-printf "case\tbinary\trun\tparticle_steps_per_s\tloop_s\tcpu_s\twall_s\tmax_rss_MiB\tcore\n"
+printf "case\tbinary\trun\tparticle_steps_per_s\tloop_s\tcpu_s\twall_s\tmax_rss_MiB\tcore\tlocate_s\tparticle_to_grid_s\tsolve_s\tgrid_to_particle_s\tupdate_s\tstatistics_s\n"
 run() { # binary case-settings... : one run into $dir on core $core
   local bin=$1; shift
   /usr/bin/time -f "%U %S %e %M" -o "$dir/time" taskset -c "$core" "$bin" \
@@ -34,9 +36,12 @@ import json, sys
 d, name, which, r, core = sys.argv[1:]
 u, s, e, m = open(d + "/time").read().split()
 j = json.load(open(d + "/out/summary.json"))
+t = j["timers_s"]
 print("\t".join([name, which, r, "%.3e" % j["particle_steps_per_second"],
                  "%.3f" % j["time_loop_s"], "%.2f" % (float(u) + float(s)), e,
-                 "%.0f" % (int(m) / 1024), core]))
+                 "%.0f" % (int(m) / 1024), core] +
+                ["%.3f" % t.get(k, 0) for k in ["locate", "particle_to_grid",
+                 "solve", "grid_to_particle", "update", "statistics"]]))
 PY
 }
 for case in "lumped P1:Basis/Type=linear:Mass matrix/Type=lumped" \
