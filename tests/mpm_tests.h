@@ -35,19 +35,19 @@ configure(psmpm::Simulator::Simulator<2> &solver,
 }
 
 /// A solver set up from the scene file prm/@p scene of the repository with
-/// the given overrides ("Subsection/Entry=value"), quiet.
+/// the given overrides ("Subsection/Entry=value"), quiet, on @p comm.
 template <int dim = 2>
 std::unique_ptr<psmpm::Simulator::Simulator<dim>>
 make_scene_solver(const std::string              &scene,
-                  const std::vector<std::string> &overrides)
+                  const std::vector<std::string> &overrides,
+                  const MPI_Comm                  comm = MPI_COMM_WORLD)
 {
   ParameterHandler prm;
   psmpm::App::declare_parameters(prm);
   prm.parse_input(std::string(PSMPM_SOURCE_DIR) + "/prm/" + scene);
   for (const auto &o : overrides)
     psmpm::App::apply_override(prm, o);
-  auto solver =
-    std::make_unique<psmpm::Simulator::Simulator<dim>>(MPI_COMM_WORLD);
+  auto solver   = std::make_unique<psmpm::Simulator::Simulator<dim>>(comm);
   solver->quiet = true;
   solver->parse_parameters(prm);
   solver->setup();

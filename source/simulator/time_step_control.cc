@@ -119,11 +119,17 @@ namespace psmpm
       double      speed     = 0;
       for (std::size_t p = 0; p < particles.size(); ++p)
         speed = std::max(speed, particles.velocity[p].norm_square());
-      const double c = state.materials.max_wave_speed(particles);
-      const double c_max =
-        Utilities::MPI::max(std::max(c, state.materials.max_p_wave_speed()) +
-                              std::sqrt(speed),
-                            state.comm);
+      // The largest wave speed and the largest particle speed, each over
+      // all ranks, then added (as on one rank): the maximum over ranks of
+      // their per-rank sums depended on which rank held which particle,
+      // so the step changed with the number of ranks.
+      const double local[2] = {std::max(state.materials.max_wave_speed(
+                                          particles),
+                                        state.materials.max_p_wave_speed()),
+                               speed};
+      double       global[2];
+      Utilities::MPI::max(local, state.comm, global);
+      const double c_max = global[0] + std::sqrt(global[1]);
       time_step     = courant_number * factor * grid_h_min / c_max;
       min_time_step = std::min(min_time_step, time_step);
       max_time_step = std::max(max_time_step, time_step);
