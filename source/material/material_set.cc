@@ -150,18 +150,17 @@ namespace psmpm
                                    const std::size_t                  last,
                                    const F                           &f) const
     {
-      const std::size_t n = last;
       if (instances.size() == 1)
         {
-          if (first < n)
-            f(*instances[0], offsets[0], first, n);
+          if (first < last)
+            f(*instances[0], offsets[0], first, last);
           return;
         }
       const auto &body = particles.body_id;
-      for (std::size_t begin = first; begin < n;)
+      for (std::size_t begin = first; begin < last;)
         {
           std::size_t end = begin + 1;
-          while (end < n && body[end] == body[begin])
+          while (end < last && body[end] == body[begin])
             ++end;
           const unsigned int k = body[begin];
           AssertIndexRange(k, instances.size());

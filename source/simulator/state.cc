@@ -53,12 +53,14 @@ namespace psmpm
       functions_per_cell   = n;
       gradients_per_cell   = space->gradients_constant_on_cells();
       Particles::resize_per_particle(shape_values, particles, n);
-      if (gradients_per_cell)
+      const unsigned int n_cells = triangulation->n_active_cells();
+      if (!gradients_per_cell)
+        Particles::resize_per_particle(shape_gradients, particles, n);
+      else if (shape_gradients.size() != std::size_t(n_cells) * n)
         {
           // Every cell's gradients, evaluated anywhere (they are constant
-          // there): a few per cent of the particle work on the scenes
-          // where P1 runs have more than a few particles per cell.
-          const unsigned int n_cells = triangulation->n_active_cells();
+          // there), once: they depend on the mesh alone, which does not
+          // change during a run (OTM keeps those of its moved grid here).
           shape_gradients.resize(std::size_t(n_cells) * n);
           cell_values.resize(n);
           for (unsigned int c = 0; c < n_cells; ++c)
@@ -67,8 +69,6 @@ namespace psmpm
                             cell_values.data(),
                             shape_gradients.data() + std::size_t(c) * n);
         }
-      else
-        Particles::resize_per_particle(shape_gradients, particles, n);
       space->evaluate(particles.size(),
                       particles.cell.data(),
                       particles.position.data(),

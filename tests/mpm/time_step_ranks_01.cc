@@ -16,24 +16,6 @@
 
 namespace
 {
-  /// The dt column of @p directory/statistics.txt.
-  std::vector<double>
-  steps(const std::string &directory)
-  {
-    std::ifstream       in(directory + "/statistics.txt");
-    std::string         line;
-    std::vector<double> dt;
-    while (std::getline(in, line))
-      if (!line.empty() && line[0] != '#')
-        {
-          std::istringstream words(line);
-          double             step, time, value;
-          words >> step >> time >> value;
-          dt.push_back(value);
-        }
-    return dt;
-  }
-
   void
   run(const MPI_Comm comm, const std::string &directory)
   {
@@ -60,7 +42,8 @@ main(int argc, char **argv)
   run(MPI_COMM_WORLD, "together");
   if (!root)
     return 0;
-  const auto alone = steps("alone"), together = steps("together");
+  const auto alone    = StatisticsTable("alone").column("dt");
+  const auto together = StatisticsTable("together").column("dt");
   double     worst = 0;
   for (std::size_t i = 1; i < std::min(alone.size(), together.size()); ++i)
     worst = std::max(worst, std::abs(together[i] / alone[i] - 1));

@@ -97,8 +97,8 @@ namespace psmpm
       double dt = 0;
 
     private:
-      /// Scratch of evaluate_shape_functions() (kept: no allocation per
-      /// step).
+      /// Scratch of evaluate_shape_functions() (the values it discards
+      /// when it evaluates the cells' gradients).
       std::vector<double> cell_values;
     };
   } // namespace Simulator
