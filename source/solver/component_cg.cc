@@ -267,12 +267,14 @@ namespace psmpm
       Epetra_MultiVector                           &x,
       const Epetra_MultiVector                     &b,
       const double                                  tolerance,
+      const std::vector<double>                    &step_tolerances,
       const unsigned int                            max_iterations)
     {
       const unsigned int n_columns = b.NumVectors();
       const unsigned int n         = b.MyLength();
       AssertThrow(preconditioners.size() == n_columns &&
                     fixed.size() == n_columns &&
+                    step_tolerances.size() == n_columns &&
                     x.NumVectors() == int(n_columns),
                   ExcMessage("ComponentCG: one preconditioner, fixed set "
                              "and solution column per right-hand side"));
@@ -336,6 +338,10 @@ namespace psmpm
         {
           const double residual = std::sqrt(global_r_b[3 * d]);
           limit[d]              = tolerance * std::sqrt(global_r_b[3 * d + 2]);
+          // A warm start's residual is what the step changed; the solve
+          // need not be more accurate than a fraction of that.
+          if (!zero_guess)
+            limit[d] = std::max(limit[d], step_tolerances[d] * residual);
           rz[d]                 = global_r_b[3 * d + 1];
           // SolverControl's test at step 0: ||r|| <= limit (a zero
           // right-hand side with a zero guess has nothing to solve).

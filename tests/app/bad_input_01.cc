@@ -147,6 +147,10 @@ main(int argc, char **argv)
                               " set Sampling stabilization = half\nend\n",
               {},
               {"Mass matrix/Sampling stabilization", "half", "case.prm"}},
+             {"step tolerance of one",
+              head + "subsection Mass matrix\n set Step tolerance = 1\nend\n",
+              {},
+              {"Mass matrix/Step tolerance", "1", "case.prm"}},
              {"sampling stabilization on a moving grid",
               head + "subsection Basis\n set Type = powell-sabin\nend\n"
                               "subsection Transfer\n set Scheme = otm\nend\n"

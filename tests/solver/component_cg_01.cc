@@ -20,7 +20,11 @@
 // (e) a warm start from 0.99 x the solution (fixed rows zero) needs
 //     fewer iterations, ends at the same solution to 1e-10, and the
 //     stopping test stays relative to |b|: from the solution itself,
-//     0 iterations.
+//     0 iterations;
+// (f) with a step tolerance of 1e-4 the warm start of (e) ends once
+//     ||r_d|| <= 1e-4 ||r_d(guess)|| (checked on b - M x recomputed),
+//     in fewer iterations than (e); from a zero guess the step tolerance
+//     changes nothing (same iterations as (a)).
 #include <deal.II/base/function.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -120,8 +124,14 @@ main(int argc, char **argv)
         preconditioners.push_back(&masked[d]);
       }
     psmpm::Solver::ComponentCG cg;
-    const auto                 result =
-      cg.solve(M.trilinos_matrix(), preconditioners, fixed, x, b, 1e-12, 1000);
+    const auto                 result = cg.solve(M.trilinos_matrix(),
+                                 preconditioners,
+                                 fixed,
+                                 x,
+                                 b,
+                                 1e-12,
+                                 {0., 0., 0.},
+                                 1000);
 
     out << "DoFs " << n << ", fixed " << fixed[0].size() << " / "
         << fixed[1].size() << ", iterations " << result.iterations[0] << " / "
@@ -177,6 +187,7 @@ main(int argc, char **argv)
                                   x_blocked,
                                   b,
                                   1e-12,
+                                  {0., 0., 0.},
                                   1000);
     for (unsigned int d = 0; d < 2; ++d)
       {
@@ -203,6 +214,7 @@ main(int argc, char **argv)
                                x_warm,
                                b,
                                1e-12,
+                               {0., 0., 0.},
                                1000);
     out << "warm start iterations " << warm.iterations[0] << " / "
         << warm.iterations[1] << std::endl;
@@ -223,14 +235,71 @@ main(int argc, char **argv)
                                 x_warm,
                                 b,
                                 1e-6,
+                                {0., 0., 0.},
                                 1000);
     PSMPM_CHECK(out, again.iterations[0] == 0 && again.iterations[1] == 0);
+
+    // (f) ||P_d (b_d - M x_d)|| for every column of X.
+    const auto residuals = [&](const Epetra_MultiVector &X) {
+      Epetra_MultiVector MX(map, 3);
+      M.trilinos_matrix().Multiply(false, X, MX);
+      std::vector<double> norms(3);
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          double s = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            if (!is_fixed(d, i))
+              s += (b[d][i] - MX[d][i]) * (b[d][i] - MX[d][i]);
+          norms[d] = std::sqrt(s);
+        }
+      return norms;
+    };
+    Epetra_MultiVector x_step(map, 3);
+    for (unsigned int d = 0; d < 3; ++d)
+      for (unsigned int i = 0; i < n; ++i)
+        x_step[d][i] = 0.99 * x[d][i];
+    const std::vector<double> before = residuals(x_step);
+    const auto                step   = cg.solve(M.trilinos_matrix(),
+                               preconditioners,
+                               fixed,
+                               x_step,
+                               b,
+                               1e-12,
+                               {1e-4, 1e-4, 1e-4},
+                               1000);
+    const std::vector<double> after  = residuals(x_step);
+    out << "step tolerance iterations " << step.iterations[0] << " / "
+        << step.iterations[1] << std::endl;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        PSMPM_CHECK(out, after[d] <= 1e-4 * before[d] * (1 + 1e-8));
+        PSMPM_CHECK(out, step.iterations[d] < warm.iterations[d]);
+      }
+    Epetra_MultiVector x_zero(map, 3);
+    const auto         cold = cg.solve(M.trilinos_matrix(),
+                               preconditioners,
+                               fixed,
+                               x_zero,
+                               b,
+                               1e-12,
+                               {1e-4, 1e-4, 1e-4},
+                               1000);
+    PSMPM_CHECK(out,
+                cold.iterations[0] == blocked.iterations[0] &&
+                  cold.iterations[1] == blocked.iterations[1]);
 
     bool thrown = false;
     x.PutScalar(0.);
     try
       {
-        cg.solve(M.trilinos_matrix(), preconditioners, fixed, x, b, 1e-12, 2);
+        cg.solve(M.trilinos_matrix(),
+                 preconditioners,
+                 fixed,
+                 x,
+                 b,
+                 1e-12,
+                 {0., 0., 0.},
+                 2);
       }
     catch (const SolverControl::NoConvergence &e)
       {

@@ -61,6 +61,11 @@ namespace psmpm
 
         std::string  type           = "partially lumped";
         double       tolerance      = 1e-12;
+        /// Mass matrix/Step tolerance: a solve warm-started from the
+        /// last step's field also ends once its residual has dropped by
+        /// this factor from the guess' (0: off), for components with
+        /// constrained DoFs.
+        double       step_tolerance = 1e-6;
         unsigned int max_iterations = 1000;
         std::string  preconditioner = "block jacobi";
         double       threshold      = 0.05;
@@ -453,6 +458,10 @@ namespace psmpm
       /// DoFs to zero only, (block) Jacobi CG, no direct solver.
       bool
       components_together() const;
+      /// Mass matrix/Step tolerance for component @p d: 0 (off) for a
+      /// free component (free_component).
+      double
+      step_tolerance(const unsigned int d) const;
       /// matrix[0] = M without constraints, the fixed rows of each
       /// component and its preconditioner with them masked.
       void
@@ -545,6 +554,11 @@ namespace psmpm
       /// every rank (e.g. y of a bar between rollers): its solution is
       /// zero, and its matrix is neither assembled nor solved.
       std::array<bool, dim>                  fully_fixed{};
+      /// Per component, whether no DoF is constrained on any rank (a free
+      /// body): its solves keep Solver tolerance alone, so that momentum
+      /// (and, with every component free, angular momentum) stays
+      /// conserved to round-off; Step tolerance applies to the others.
+      std::array<bool, dim>                  free_component{};
       std::vector<std::vector<unsigned int>> fixed_rows;
       ComponentCG                            component_cg;
       std::unique_ptr<Epetra_MultiVector>    rhs_columns, solution_columns;
