@@ -18,6 +18,34 @@ namespace psmpm
   {
     namespace
     {
+      /// Add the particle @p id at @p x of a block mesh if it lies in a
+      /// body and in a cell this rank owns. @p hint is the cell of the
+      /// previous point (the points come in block order).
+      template <int dim, typename Classify>
+      void
+      add_block_particle(const std::uint64_t                      id,
+                         const Point<dim>                        &x,
+                         const double                             volume,
+                         const Mesh::CellLocator<dim>            &locator,
+                         const std::vector<double>               &density,
+                         const std::function<bool(unsigned int)> &is_owned,
+                         const Classify                          &classify,
+                         const bool                               partial,
+                         unsigned int                            &hint,
+                         ParticleSet<dim>                        &particles)
+      {
+        const int body = classify(x);
+        if (body < 0)
+          return;
+        const unsigned int c = locator.locate(x, hint);
+        if (c == Mesh::CellLocator<dim>::invalid && partial)
+          return; // in a part of the mesh this rank does not hold
+        AssertThrow(c != Mesh::CellLocator<dim>::invalid, ExcInternalError());
+        hint = c;
+        if (is_owned(c))
+          particles.add(id, c, x, volume, density[body], body);
+      }
+
       /// 1D: per_block_x particles at the centres of equal sub-intervals
       /// of every element (= block), numbered left to right.
       template <typename Classify>
@@ -38,21 +66,17 @@ namespace psmpm
         unsigned int       hint   = 0;
         for (unsigned int b = 0; b < mesh.blocks_x; ++b)
           for (unsigned int i = 0; i < n; ++i, ++id)
-            {
-              // The same x as the 2D block layout with these blocks.
-              const Point<1> x(h * (b + (i + 0.5) / n));
-              const int      body = classify(x);
-              if (body < 0)
-                continue;
-              const unsigned int c = locator.locate(x, hint);
-              if (c == Mesh::CellLocator<1>::invalid && partial)
-                continue; // in a part of the mesh this rank does not hold
-              AssertThrow(c != Mesh::CellLocator<1>::invalid,
-                          ExcInternalError());
-              hint = c;
-              if (is_owned(c))
-                particles.add(id, c, x, volume, density[body], body);
-            }
+            // The same x as the 2D block layout with these blocks.
+            add_block_particle(id,
+                               Point<1>(h * (b + (i + 0.5) / n)),
+                               volume,
+                               locator,
+                               density,
+                               is_owned,
+                               classify,
+                               partial,
+                               hint,
+                               particles);
       }
 
       /// 2D block meshes: a per_block_x by per_block_y sub-grid of every
@@ -79,21 +103,18 @@ namespace psmpm
           for (unsigned int bi = 0; bi < mesh.blocks_x; ++bi)
             for (unsigned int j = 0; j < per_block_y; ++j)
               for (unsigned int i = 0; i < per_block_x; ++i, ++id)
-                {
-                  const Point<2> x(hx * (bi + (i + 0.5) / per_block_x),
-                                   hy * (bj + (j + 0.5) / per_block_y));
-                  const int      body = classify(x);
-                  if (body < 0)
-                    continue;
-                  const unsigned int c = locator.locate(x, hint);
-                  if (c == Mesh::CellLocator<2>::invalid && partial)
-                    continue; // in a part of the mesh this rank does not hold
-                  AssertThrow(c != Mesh::CellLocator<2>::invalid,
-                              ExcInternalError());
-                  hint = c;
-                  if (is_owned(c))
-                    particles.add(id, c, x, volume, density[body], body);
-                }
+                add_block_particle(id,
+                                   Point<2>(hx * (bi + (i + 0.5) / per_block_x),
+                                            hy *
+                                              (bj + (j + 0.5) / per_block_y)),
+                                   volume,
+                                   locator,
+                                   density,
+                                   is_owned,
+                                   classify,
+                                   partial,
+                                   hint,
+                                   particles);
       }
 
       /// 2D Gmsh meshes: every triangle split into per_cell^2 similar
