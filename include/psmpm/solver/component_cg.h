@@ -51,10 +51,10 @@ namespace psmpm
        * Solve from the guess in @p x (zero on the fixed rows) until
        * ||r_d|| <= @p tolerance ||b_d|| or, from a guess that is not zero,
        * ||r_d|| <= @p step_tolerances[d] ||b_d - M x_d|| (the residual of
-       * the guess: what the step changes), for every column d. @p fixed[d]
-       * lists
-       * the locally owned rows (local indices of M's row map) fixed for column
-       * d; their entries of @p b must be zero and stay zero in @p x. Throws
+       * the guess: what the step changes), for every column d.
+       * @p fixed[d] lists the locally owned rows (local indices of M's row
+       * map) fixed for column d; their entries of @p b must be zero and stay
+       * zero in @p x. Throws
        * SolverControl::NoConvergence if a column needs more than
        * @p max_iterations.
        */
