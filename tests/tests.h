@@ -26,6 +26,21 @@ filter(const double x, const double tol = 1e-12)
   return std::abs(x) < tol ? 0.0 : x;
 }
 
+/// Whether this process is rank 0 of MPI_COMM_WORLD: in tests run on
+/// several ranks (.mpirun=N.output) it alone writes "output".
+inline bool
+is_root_rank()
+{
+  return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+}
+
+/// The test's "output" file on rank 0, /dev/null on the other ranks.
+inline std::ofstream
+root_output()
+{
+  return std::ofstream(is_root_rank() ? "output" : "/dev/null");
+}
+
 /// Print a pass/fail line for a check; the .output expects "OK".
 #define PSMPM_CHECK(out, condition) \
   (out) << ((condition) ? "OK   " : "FAIL ") << #condition << std::endl

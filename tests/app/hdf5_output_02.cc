@@ -89,8 +89,8 @@ int
 main(int argc, char **argv)
 {
   psmpm::MPISession mpi(argc, argv);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  const bool        root = is_root_rank();
+  std::ofstream     out  = root_output();
   if (root)
     for (const std::string d : {"vtu", "hdf5", "hdf5_resumed", "corner"})
       fs::remove_all(d);

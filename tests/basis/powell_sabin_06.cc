@@ -22,8 +22,7 @@ main(int argc, char **argv)
   psmpm::MPISession                mpi(argc, argv);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
   return run_test([comm]() {
-    const bool    root = Utilities::MPI::this_mpi_process(comm) == 0;
-    std::ofstream out(root ? "output" : "/dev/null");
+    std::ofstream out = root_output();
 
     parallel::shared::Triangulation<2> tria(comm);
     psmpm::Mesh::MeshGenerator<2>::make_blocks(

@@ -35,8 +35,8 @@ int
 main(int argc, char **argv)
 {
   psmpm::MPISession mpi(argc, argv);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  const bool        root = is_root_rank();
+  std::ofstream     out  = root_output();
   if (root)
     run(MPI_COMM_SELF, "alone");
   run(MPI_COMM_WORLD, "together");

@@ -7,8 +7,7 @@ int
 main(int argc, char **argv)
 {
   psmpm::MPISession mpi(argc, argv);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  std::ofstream     out = root_output();
   for (const std::string type : {"consistent", "lumped"})
     {
       psmpm::Simulator::Simulator<2> solver(MPI_COMM_WORLD);
