@@ -166,12 +166,7 @@ namespace psmpm
                                                             const std::size_t, \
                                                             const std::size_t, \
                                                             Tensor<2, DIM> *);
-      PSMPM_INSTANTIATE(1, keep)
-      PSMPM_INSTANTIATE(2, keep)
-      PSMPM_INSTANTIATE(1, flip)
-      PSMPM_INSTANTIATE(2, flip)
-      PSMPM_INSTANTIATE(1, grid)
-      PSMPM_INSTANTIATE(2, grid)
+      PSMPM_FOR_VELOCITY_UPDATES(PSMPM_INSTANTIATE)
 #undef PSMPM_INSTANTIATE
     } // namespace ParticleLoops
   }   // namespace Simulator

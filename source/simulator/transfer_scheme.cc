@@ -209,12 +209,7 @@ namespace psmpm
 #define PSMPM_INSTANTIATE(DIM, UPDATE)                         \
   template void TransferScheme<DIM>::move_and_update_material< \
     ParticleLoops::VelocityUpdate::UPDATE>(State<DIM> &, StabilityMonitor &);
-    PSMPM_INSTANTIATE(1, keep)
-    PSMPM_INSTANTIATE(2, keep)
-    PSMPM_INSTANTIATE(1, flip)
-    PSMPM_INSTANTIATE(2, flip)
-    PSMPM_INSTANTIATE(1, grid)
-    PSMPM_INSTANTIATE(2, grid)
+    PSMPM_FOR_VELOCITY_UPDATES(PSMPM_INSTANTIATE)
 #undef PSMPM_INSTANTIATE
   } // namespace Simulator
 } // namespace psmpm

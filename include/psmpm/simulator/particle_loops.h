@@ -58,6 +58,17 @@ namespace psmpm
         grid
       };
 
+/// Apply @p M(dim, update) to every dimension and VelocityUpdate: the
+/// explicit instantiations of the templates on VelocityUpdate (here and
+/// in TransferScheme) follow this one list.
+#define PSMPM_FOR_VELOCITY_UPDATES(M) \
+  M(1, keep)                          \
+  M(2, keep)                          \
+  M(1, flip)                          \
+  M(2, flip)                          \
+  M(1, grid)                          \
+  M(2, grid)
+
       /**
        * The grid velocity v_i = state.grid_velocity at every particle:
        * positions and displacements advance by dt sum_i v_i N_i(x_p), the
