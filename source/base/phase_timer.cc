@@ -48,6 +48,23 @@ namespace psmpm
     ++timer.sections[section].calls;
   }
 
+  PhaseTimer::Laps::Laps(PhaseTimer &timer)
+    : timer(timer)
+    , last(std::chrono::steady_clock::now())
+  {
+  }
+
+  void
+  PhaseTimer::Laps::lap(const char *name)
+  {
+    const auto                          now = std::chrono::steady_clock::now();
+    const std::chrono::duration<double> elapsed = now - last;
+    last                                        = now;
+    const unsigned int section                  = timer.find(name);
+    timer.sections[section].seconds += elapsed.count();
+    ++timer.sections[section].calls;
+  }
+
   std::map<std::string, double>
   PhaseTimer::wall_times() const
   {

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_simplex_p.h>
 
 #include <psmpm/base/cross.h>
+#include <psmpm/base/pair.h>
 #include <psmpm/base/registry.h>
 #include <psmpm/basis/powell_sabin.h>
 #include <psmpm/mesh/triangle_geometry.h>
@@ -586,21 +587,6 @@ namespace psmpm
         const unsigned int     edge    = next[m];
         const double          *sl      = d.split_line[edge];
         return 2 * edge + (sl[0] + sl[1] * x + sl[2] * y >= 0 ? 0 : 1);
-      }
-
-      /// Two doubles in one register (GCC and Clang vector extension;
-      /// SSE2 on every x86-64, NEON on ARM). Debian's deal.II is built
-      /// without vectorization, so VectorizedArray<double, 2> is not there.
-      /// Lane-wise the operations are those of the scalar code, so results
-      /// are the same bits.
-      using Pair = double __attribute__((vector_size(16)));
-
-      inline Pair
-      load_pair(const double *p)
-      {
-        Pair v;
-        std::memcpy(&v, p, sizeof(v));
-        return v;
       }
 
       template <typename SubTriangle>

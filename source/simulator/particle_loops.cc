@@ -16,13 +16,31 @@ namespace psmpm
 
       template <int dim>
       void
-      particles_to_cells(State<dim>  &state,
-                         const double momentum_weight,
-                         const double force_weight)
+      particles_to_cells(const State<dim> &state,
+                         const double      momentum_weight,
+                         const double      force_weight)
       {
-        auto &grid = *state.grid;
-        grid.zero_cell_mass();
-        grid.zero_cell_rhs();
+        state.grid->zero_cell_mass();
+        state.grid->zero_cell_rhs();
+        add_particles_to_cells(state,
+                               momentum_weight,
+                               force_weight,
+                               0,
+                               state.particles.size());
+        finish_particles_to_cells(state);
+      }
+
+
+
+      template <int dim>
+      void
+      add_particles_to_cells(const State<dim> &state,
+                             const double      momentum_weight,
+                             const double      force_weight,
+                             const std::size_t first,
+                             const std::size_t last)
+      {
+        auto              &grid       = *state.grid;
         const auto        &particles  = state.particles;
         const unsigned int n          = grid.dofs_per_cell;
         auto              &cells      = grid.cell_arrays();
@@ -30,7 +48,7 @@ namespace psmpm
         double            *lumped     = cells.lumped.data();
         double            *mass_mat   = cells.mass.data();
         Tensor<1, dim>    *rhs        = cells.rhs.data();
-        for (std::size_t p = 0; p < particles.size(); ++p)
+        for (std::size_t p = first; p < last; ++p)
           {
             const unsigned int             cell = particles.cell[p];
             const unsigned int             base = cell * n;
@@ -55,8 +73,20 @@ namespace psmpm
                                  consistent ? mass_mat + base * n : nullptr,
                                  rhs + base);
           }
-        if (consistent)
-          symmetrize_cell_mass(mass_mat, cells.mass.size() / (n * n), n);
+      }
+
+
+
+      template <int dim>
+      void
+      finish_particles_to_cells(const State<dim> &state)
+      {
+        auto              &cells = state.grid->cell_arrays();
+        const unsigned int n     = state.grid->dofs_per_cell;
+        if (!cells.mass.empty())
+          symmetrize_cell_mass(cells.mass.data(),
+                               cells.mass.size() / (n * n),
+                               n);
       }
 
 
@@ -151,9 +181,25 @@ namespace psmpm
 
 
       template void
-      particles_to_cells(State<1> &, const double, const double);
+      add_particles_to_cells(const State<1> &,
+                             const double,
+                             const double,
+                             const std::size_t,
+                             const std::size_t);
       template void
-      particles_to_cells(State<2> &, const double, const double);
+      add_particles_to_cells(const State<2> &,
+                             const double,
+                             const double,
+                             const std::size_t,
+                             const std::size_t);
+      template void
+      finish_particles_to_cells(const State<1> &);
+      template void
+      finish_particles_to_cells(const State<2> &);
+      template void
+      particles_to_cells(const State<1> &, const double, const double);
+      template void
+      particles_to_cells(const State<2> &, const double, const double);
       template void
       accelerate_particles(State<1> &, const bool);
       template void

@@ -622,56 +622,10 @@ namespace psmpm
     void
     Simulator<dim>::locate_particles()
     {
-      PhaseTimer::Scope  t(timer, "locate");
-      auto              &particles = state.particles;
-      const unsigned int rank      = Utilities::MPI::this_mpi_process(comm);
-      const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(comm);
-      std::map<unsigned int, std::vector<double>> outgoing;
-      std::vector<bool>                           keep(particles.size(), true);
-      bool                                        any_leaving = false;
-      for (std::size_t p = 0; p < particles.size(); ++p)
-        {
-          const unsigned int c =
-            state.locator.locate(particles.position[p], particles.cell[p]);
-          if (c == Mesh::CellLocator<dim>::invalid)
-            {
-              std::string where = prm_value(particles.position[p][0]);
-              for (unsigned int d = 1; d < dim; ++d)
-                where += ", " + prm_value(particles.position[p][d]);
-              // A distributed mesh: the rank sees its part only.
-              monitor.report(Failure::left_mesh,
-                             "particle " + std::to_string(particles.id[p]) +
-                               " left the mesh" +
-                               (state.whole_index.empty() ?
-                                  "" :
-                                  " (or its rank's cells and ghost layers "
-                                  "in one step)") +
-                               " at (" + where + ")");
-              continue; // keep its old cell; the run stops after this step
-            }
-          cell_crossings += c != particles.cell[p];
-          particles.cell[p] = c;
-          if (n_ranks > 1 && state.cell_owner[c] != rank)
-            {
-              particles.pack(p, outgoing[state.cell_owner[c]]);
-              keep[p]     = false;
-              any_leaving = true;
-            }
-        }
-      if (n_ranks > 1)
-        {
-          if (any_leaving)
-            particles.compress(keep);
-          const auto incoming = Utilities::MPI::some_to_some(comm, outgoing);
-          for (const auto &in : incoming)
-            {
-              const std::size_t first = particles.size();
-              particles.unpack(in.second);
-              for (std::size_t p = first; p < particles.size(); ++p)
-                particles.cell[p] = state.locator.locate(particles.position[p]);
-            }
-        }
-      state.evaluate_shape_functions();
+      PhaseTimer::Scope t(timer, "locate");
+      relocation.begin(state);
+      relocation.locate(state, monitor, 0, state.particles.size());
+      relocation.finish(state);
     }
 
     template <int dim>
@@ -681,12 +635,15 @@ namespace psmpm
       state.dt = dt;
       transfer->observe_updated_chunks(transfer->carries_affine() ? nullptr :
                                                                     &step_sums);
+      // On a grid that moves with the material the particles keep their
+      // cells (and the scheme has evaluated the basis on the moved grid).
+      // Otherwise the scheme may locate them chunk by chunk as it moves
+      // them; if it did not, they are located here.
+      transfer->relocate_with(transfer->moves_grid() ? nullptr : &relocation);
       if (!transfer->step(state, monitor, timer))
         return;
       total_iterations += state.grid->statistics().iterations;
-      // On a grid that moves with the material the particles keep their
-      // cells (and the scheme has evaluated the basis on the moved grid).
-      if (!transfer->moves_grid())
+      if (!transfer->moves_grid() && !transfer->relocated())
         locate_particles();
       state.time = time_step_control.snap(state.time + dt);
     }
@@ -1322,7 +1279,8 @@ namespace psmpm
       summary.set_integer("n_mpi_ranks", Utilities::MPI::n_mpi_processes(comm));
       summary.set_integer("cg_iterations", total_iterations);
       summary.set_integer("cell_crossings",
-                          Utilities::MPI::sum(cell_crossings, comm));
+                          Utilities::MPI::sum(relocation.cell_crossings(),
+                                              comm));
       summary.set("end_time", state.time);
       summary.set("time_step", time_step_control.get_time_step());
       summary.set("time_step_min", time_step_control.get_min_time_step());

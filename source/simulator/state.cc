@@ -49,6 +49,14 @@ namespace psmpm
     void
     State<dim>::evaluate_shape_functions()
     {
+      prepare_shape_functions();
+      evaluate_shape_functions(0, particles.size());
+    }
+
+    template <int dim>
+    void
+    State<dim>::prepare_shape_functions()
+    {
       const unsigned int n = space->dofs_per_cell();
       functions_per_cell   = n;
       gradients_per_cell   = space->gradients_constant_on_cells();
@@ -69,11 +77,20 @@ namespace psmpm
                             cell_values.data(),
                             shape_gradients.data() + std::size_t(c) * n);
         }
-      space->evaluate(particles.size(),
-                      particles.cell.data(),
-                      particles.position.data(),
-                      shape_values.data(),
-                      gradients_per_cell ? nullptr : shape_gradients.data());
+    }
+
+    template <int dim>
+    void
+    State<dim>::evaluate_shape_functions(const std::size_t first,
+                                         const std::size_t last)
+    {
+      const unsigned int n = functions_per_cell;
+      space->evaluate(last - first,
+                      particles.cell.data() + first,
+                      particles.position.data() + first,
+                      shape_values.data() + first * n,
+                      gradients_per_cell ? nullptr :
+                                           shape_gradients.data() + first * n);
     }
 
     template struct State<1>;

@@ -108,8 +108,10 @@ namespace psmpm
                                                 momentum_weight,
                                                 force_weight);
         }
-      else
+      else if (!(state.forces_in_cells && momentum_weight == 0 &&
+                 force_weight == 1))
         ParticleLoops::particles_to_cells(state, momentum_weight, force_weight);
+      state.forces_in_cells = false;
       grid.assemble_mass();
     }
 
@@ -182,9 +184,21 @@ namespace psmpm
     template <ParticleLoops::VelocityUpdate velocity_update>
     void
     TransferScheme<dim>::move_and_update_material(State<dim>       &state,
-                                                  StabilityMonitor &monitor)
+                                                  StabilityMonitor &monitor,
+                                                  PhaseTimer       &timer)
     {
       const std::size_t n = state.particles.size();
+      // A reconstruction maps mass and forces itself.
+      const bool accumulate = relocation != nullptr && !state.reconstruction;
+      PhaseTimer::Laps laps(timer);
+      if (relocation != nullptr)
+        relocation->begin(state);
+      if (accumulate)
+        {
+          state.grid->zero_cell_mass();
+          state.grid->zero_cell_rhs();
+          laps.lap("particle to grid");
+        }
       for (std::size_t first = 0; first < n; first += chunk)
         {
           const std::size_t last = std::min(n, first + chunk);
@@ -201,14 +215,66 @@ namespace psmpm
                           monitor);
           if (chunk_observer != nullptr)
             chunk_observer->updated(state, first, last);
+          laps.lap("update");
+          if (relocation == nullptr)
+            continue;
+          const bool some_left =
+            relocation->locate(state, monitor, first, last) > 0;
+          laps.lap("locate");
+          if (!accumulate)
+            continue;
+          add_forces_of_chunk(state, first, last, some_left);
+          laps.lap("particle to grid");
         }
+      // Every rank enters every section (PhaseTimer), also a rank
+      // without particles.
+      laps.lap("update");
+      if (relocation == nullptr)
+        return;
+      const std::size_t received = relocation->finish(state);
+      relocated_now              = true;
+      laps.lap("locate");
+      if (!accumulate)
+        return;
+      ParticleLoops::add_particles_to_cells(state,
+                                            0.,
+                                            1.,
+                                            received,
+                                            state.particles.size());
+      ParticleLoops::finish_particles_to_cells(state);
+      state.forces_in_cells = true;
+      laps.lap("particle to grid");
+    }
+
+    template <int dim>
+    void
+    TransferScheme<dim>::add_forces_of_chunk(State<dim>       &state,
+                                             const std::size_t first,
+                                             const std::size_t last,
+                                             const bool        some_left) const
+    {
+      if (!some_left)
+        {
+          ParticleLoops::add_particles_to_cells(state, 0., 1., first, last);
+          return;
+        }
+      // The runs between the particles that left (their owner adds them).
+      std::size_t begin = first;
+      for (std::size_t p = first; p <= last; ++p)
+        if (p == last || relocation->leaving(p))
+          {
+            ParticleLoops::add_particles_to_cells(state, 0., 1., begin, p);
+            begin = p + 1;
+          }
     }
 
     template class TransferScheme<1>;
     template class TransferScheme<2>;
 #define PSMPM_INSTANTIATE(DIM, UPDATE)                         \
   template void TransferScheme<DIM>::move_and_update_material< \
-    ParticleLoops::VelocityUpdate::UPDATE>(State<DIM> &, StabilityMonitor &);
+    ParticleLoops::VelocityUpdate::UPDATE>(State<DIM> &,       \
+                                           StabilityMonitor &, \
+                                           PhaseTimer &);
     PSMPM_FOR_VELOCITY_UPDATES(PSMPM_INSTANTIATE)
 #undef PSMPM_INSTANTIATE
   } // namespace Simulator

@@ -59,6 +59,27 @@ namespace psmpm
       std::chrono::steady_clock::time_point start;
     };
 
+    /**
+     * Splits the time of a loop that interleaves phases chunk by chunk
+     * (move, locate, particle to grid: TransferScheme::
+     * move_and_update_material()) among their sections: lap(name) charges
+     * the time since the previous lap (or since construction) to section
+     * @p name. One clock read per lap, against two for a Scope; the
+     * enclosing code must not hold a Scope of its own (its time would be
+     * counted twice).
+     */
+    class Laps
+    {
+    public:
+      explicit Laps(PhaseTimer &timer);
+      void
+      lap(const char *name);
+
+    private:
+      PhaseTimer                           &timer;
+      std::chrono::steady_clock::time_point last;
+    };
+
     /// Total wall seconds per section on this rank.
     std::map<std::string, double>
     wall_times() const;

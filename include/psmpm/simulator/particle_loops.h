@@ -30,12 +30,34 @@ namespace psmpm
        * right-hand sides momentum_weight m_p v_p N_i + force_weight (m_p
        * g N_i - V_p sigma_p grad N_i) (add_point()): the particle loop of
        * TransferScheme::particles_to_grid, which then assembles the mass.
+       * Writes the cell arrays of the state's grid, nothing else.
        */
       template <int dim>
       void
-      particles_to_cells(State<dim>  &state,
-                         const double momentum_weight,
-                         const double force_weight);
+      particles_to_cells(const State<dim> &state,
+                         const double      momentum_weight,
+                         const double      force_weight);
+
+      /**
+       * The particle loop of particles_to_cells() for the particles
+       * [@p first, @p last) alone, into cell arrays the caller has zeroed
+       * (grid.zero_cell_mass() and zero_cell_rhs()). Ranges in particle
+       * order from the first give the sums of particles_to_cells(), bit
+       * for bit, once finish_particles_to_cells() has run.
+       */
+      template <int dim>
+      void
+      add_particles_to_cells(const State<dim> &state,
+                             const double      momentum_weight,
+                             const double      force_weight,
+                             const std::size_t first,
+                             const std::size_t last);
+
+      /// After the last add_particles_to_cells(): the cell mass matrices'
+      /// lower triangles (symmetrize_cell_mass()).
+      template <int dim>
+      void
+      finish_particles_to_cells(const State<dim> &state);
 
       /**
        * v_p += dt sum_i a_i N_i(x_p) (MUSL's first grid-to-particle

@@ -22,6 +22,7 @@
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/postprocess/tracked_particle.h>
 #include <psmpm/simulator/checkpoint.h>
+#include <psmpm/simulator/particle_relocation.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
@@ -215,6 +216,11 @@ namespace psmpm
       {
         return state.locator;
       }
+      const ParticleRelocation<dim> &
+      get_relocation() const
+      {
+        return relocation;
+      }
       double
       get_time_step() const
       {
@@ -274,10 +280,11 @@ namespace psmpm
       types::global_dof_index n_functions = 0;
       /// Transfer/Reconstruction ("particles": none).
       std::string reconstruction_name = "particles";
-      /// Particles that changed cells on this rank since the run (or its
-      /// resume) started: grid crossings, the source of MPM's
-      /// grid-crossing noise (summary.json "cell_crossings").
-      std::uint64_t cell_crossings = 0;
+      /// Locates the moved particles; counts the particles that changed
+      /// cells on this rank since the run (or its resume) started: grid
+      /// crossings, the source of MPM's grid-crossing noise (summary.json
+      /// "cell_crossings").
+      ParticleRelocation<dim> relocation;
       /// CPU seconds (user + sys, this rank) of the time loop of run().
       double cpu_time_loop = 0;
       /// Whether `automatic` takes partially lumped mass with

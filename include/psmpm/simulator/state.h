@@ -42,6 +42,17 @@ namespace psmpm
       void
       evaluate_shape_functions();
 
+      /// Size the basis arrays for the particles there are now (the
+      /// values of those that stay keep their place) and, once, evaluate
+      /// the cells' gradients where they are constant on cells.
+      void
+      prepare_shape_functions();
+
+      /// Values and gradients of the basis at the particles
+      /// [@p first, @p last) (after prepare_shape_functions()).
+      void
+      evaluate_shape_functions(const std::size_t first, const std::size_t last);
+
       /**
        * The dofs_per_cell() basis gradients at particle @p p, which lies
        * in cell @p cell (the loops have read it already): one set per cell
@@ -95,6 +106,17 @@ namespace psmpm
       unsigned int                step = 0;
       /// Length of the step under way (0 before the first).
       double dt = 0;
+      /**
+       * Whether the grid's cell arrays hold the particles' mass and forces
+       * (momentum weight 0, force weight 1) of the state as it is now:
+       * MUSL and USL accumulate them for the next step while each chunk of
+       * moved particles is still in the cache
+       * (TransferScheme::move_and_update_material()), and the next
+       * particles_to_grid() takes them instead of a pass over all
+       * particles. particles_to_grid() clears it; nothing else changes the
+       * particles between two steps.
+       */
+      bool forces_in_cells = false;
 
     private:
       /// Scratch of evaluate_shape_functions() (the values it discards

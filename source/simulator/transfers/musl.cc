@@ -61,9 +61,8 @@ namespace psmpm
                               StabilityMonitor &monitor,
                               PhaseTimer       &timer)
         {
-          PhaseTimer::Scope t(timer, "update");
           this->template move_and_update_material<
-            ParticleLoops::VelocityUpdate::keep>(state, monitor);
+            ParticleLoops::VelocityUpdate::keep>(state, monitor, timer);
         }
       };
     } // namespace

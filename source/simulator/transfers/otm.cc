@@ -264,10 +264,9 @@ namespace psmpm
                          StabilityMonitor &monitor,
                          PhaseTimer       &timer)
         {
-          PhaseTimer::Scope t(timer, "update");
           // v_p = sum_a u_a N_a,k(x_p) = (x_p,k+1 - x_p,k) / dt_k.
           this->template move_and_update_material<
-            ParticleLoops::VelocityUpdate::grid>(state, monitor);
+            ParticleLoops::VelocityUpdate::grid>(state, monitor, timer);
         }
 
         /// The moved grid, the last nodal velocity and step, by global DoF

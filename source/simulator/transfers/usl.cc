@@ -47,9 +47,8 @@ namespace psmpm
                          StabilityMonitor &monitor,
                          PhaseTimer       &timer)
         {
-          PhaseTimer::Scope t(timer, "update");
           this->template move_and_update_material<
-            ParticleLoops::VelocityUpdate::flip>(state, monitor);
+            ParticleLoops::VelocityUpdate::flip>(state, monitor, timer);
         }
       };
     } // namespace
