@@ -202,24 +202,9 @@ namespace psmpm
     ParticleSet<dim>::compress(const std::vector<bool> &keep)
     {
       AssertDimension(keep.size(), size());
-      const unsigned int n_s = n_state();
-      std::size_t        j   = 0;
-      for (std::size_t i = 0; i < keep.size(); ++i)
-        if (keep[i])
-          {
-            // j <= i: moving entries left, front to back, is safe.
-            for (unsigned int k = 0; k < n_s; ++k)
-              state[j * n_s + k] = state[i * n_s + k];
-            ++j;
-          }
-      state.resize(j * n_s);
-
+      compress_per_particle(state, keep, n_state());
       for_each_array(*this, [&keep](auto &array) {
-        std::size_t j = 0;
-        for (std::size_t i = 0; i < array.size(); ++i)
-          if (keep[i])
-            array[j++] = array[i];
-        array.resize(j);
+        compress_per_particle(array, keep);
       });
     }
 

@@ -10,29 +10,6 @@ namespace psmpm
 {
   namespace Simulator
   {
-    namespace
-    {
-      /// Keep the blocks of @p n entries of @p array whose keep[i] is set,
-      /// in order (ParticleSet::compress() for a per-particle array).
-      template <typename T>
-      void
-      compress_blocks(std::vector<T>          &array,
-                      const std::vector<bool> &keep,
-                      const unsigned int       n)
-      {
-        std::size_t j = 0;
-        for (std::size_t i = 0; i < keep.size(); ++i)
-          if (keep[i])
-            {
-              // j <= i: moving blocks left, front to back, is safe.
-              for (unsigned int k = 0; k < n; ++k)
-                array[j * n + k] = array[i * n + k];
-              ++j;
-            }
-        array.resize(j * n);
-      }
-    } // namespace
-
     template <int dim>
     void
     ParticleRelocation<dim>::begin(State<dim> &state)
@@ -104,11 +81,13 @@ namespace psmpm
           sent = particles.size();
           particles.compress(keep);
           sent -= particles.size();
-          compress_blocks(state.shape_values, keep, state.functions_per_cell);
+          Particles::compress_per_particle(state.shape_values,
+                                           keep,
+                                           state.functions_per_cell);
           if (!state.gradients_per_cell)
-            compress_blocks(state.shape_gradients,
-                            keep,
-                            state.functions_per_cell);
+            Particles::compress_per_particle(state.shape_gradients,
+                                             keep,
+                                             state.functions_per_cell);
         }
       const std::size_t first = particles.size();
       const auto incoming = Utilities::MPI::some_to_some(state.comm, outgoing);

@@ -189,6 +189,31 @@ namespace psmpm
         array.reserve(std::max(n, particles.capacity() * per_particle));
       array.resize(n);
     }
+
+    /**
+     * Keep the blocks of @p per_particle entries of a per-particle array
+     * whose keep[i] is set, in order: ParticleSet::compress() for an
+     * array beside the particle set (the basis cache) or inside it (the
+     * material state).
+     */
+    template <typename T>
+    void
+    compress_per_particle(std::vector<T>          &array,
+                          const std::vector<bool> &keep,
+                          const unsigned int       per_particle = 1)
+    {
+      const unsigned int n = per_particle;
+      std::size_t        j = 0;
+      for (std::size_t i = 0; i < keep.size(); ++i)
+        if (keep[i])
+          {
+            // j <= i: moving blocks left, front to back, is safe.
+            for (unsigned int k = 0; k < n; ++k)
+              array[j * n + k] = array[i * n + k];
+            ++j;
+          }
+      array.resize(j * n);
+    }
   } // namespace Particles
 } // namespace psmpm
 
