@@ -17,7 +17,6 @@ namespace psmpm
       state.prepare_shape_functions();
       outgoing.clear();
       any_leaving = false;
-      started     = true;
     }
 
     template <int dim>
@@ -71,7 +70,6 @@ namespace psmpm
     std::size_t
     ParticleRelocation<dim>::finish(State<dim> &state)
     {
-      started         = false;
       auto &particles = state.particles;
       sent            = 0;
       if (Utilities::MPI::n_mpi_processes(state.comm) == 1)

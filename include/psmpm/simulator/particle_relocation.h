@@ -58,13 +58,6 @@ namespace psmpm
       std::size_t
       finish(State<dim> &state);
 
-      /// Whether begin() was called without finish() since.
-      bool
-      under_way() const
-      {
-        return started;
-      }
-
       /// Particles the last finish() sent to other ranks.
       std::size_t
       particles_sent() const
@@ -83,7 +76,6 @@ namespace psmpm
       std::map<unsigned int, std::vector<double>> outgoing;
       std::vector<bool>                           keep;
       bool                                        any_leaving = false;
-      bool                                        started     = false;
       std::uint64_t                               crossings   = 0;
       std::size_t                                 sent        = 0;
     };

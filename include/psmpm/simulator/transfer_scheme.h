@@ -44,8 +44,9 @@ namespace psmpm
      * "Transfer", entry "Scheme"): from the particles' mass, momentum and
      * stress to grid accelerations and velocities and back to particle
      * velocities, stresses (through the material), volumes and positions.
-     * Locating the moved particles is the simulator's job. Failures go to
-     * the monitor; kernels never throw for an unstable state.
+     * The simulator locates the moved particles, or hands that to the
+     * scheme (relocate_with()). Failures go to the monitor; kernels never
+     * throw for an unstable state.
      *
      * Schemes register in TransferSchemeRegistry<dim>; the factory gets
      * the parameters inside subsection "Transfer".
