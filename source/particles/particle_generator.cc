@@ -47,50 +47,31 @@ namespace psmpm
       }
 
       /// 1D: per_block_x particles at the centres of equal sub-intervals
-      /// of every element (= block), numbered left to right.
-      template <typename Classify>
+      /// of every element (= block), numbered left to right; @p add
+      /// (id, x, volume) places each (add_block_particle()).
+      template <typename Add>
       void
-      generate_lines(const ParticleGenerator<1>              &generator,
-                     const Mesh::MeshGenerator<1>            &mesh,
-                     const Mesh::CellLocator<1>              &locator,
-                     const std::vector<double>               &density,
-                     const std::function<bool(unsigned int)> &is_owned,
-                     const Classify                          &classify,
-                     const bool                               partial,
-                     ParticleSet<1>                          &particles)
+      generate_lines(const ParticleGenerator<1>   &generator,
+                     const Mesh::MeshGenerator<1> &mesh,
+                     const Add                    &add)
       {
         const unsigned int n      = generator.per_block_x;
         const double       h      = mesh.length / mesh.blocks_x;
         const double       volume = h / n;
         std::uint64_t      id     = 0;
-        unsigned int       hint   = 0;
         for (unsigned int b = 0; b < mesh.blocks_x; ++b)
           for (unsigned int i = 0; i < n; ++i, ++id)
             // The same x as the 2D block layout with these blocks.
-            add_block_particle(id,
-                               Point<1>(h * (b + (i + 0.5) / n)),
-                               volume,
-                               locator,
-                               density,
-                               is_owned,
-                               classify,
-                               partial,
-                               hint,
-                               particles);
+            add(id, Point<1>(h * (b + (i + 0.5) / n)), volume);
       }
 
       /// 2D block meshes: a per_block_x by per_block_y sub-grid of every
-      /// block, numbered block by block.
-      template <typename Classify>
+      /// block, numbered block by block; @p add as for generate_lines().
+      template <typename Add>
       void
-      generate_blocks(const ParticleGenerator<2>              &generator,
-                      const Mesh::MeshGenerator<2>            &mesh,
-                      const Mesh::CellLocator<2>              &locator,
-                      const std::vector<double>               &density,
-                      const std::function<bool(unsigned int)> &is_owned,
-                      const Classify                          &classify,
-                      const bool                               partial,
-                      ParticleSet<2>                          &particles)
+      generate_blocks(const ParticleGenerator<2>   &generator,
+                      const Mesh::MeshGenerator<2> &mesh,
+                      const Add                    &add)
       {
         const unsigned int per_block_x = generator.per_block_x;
         const unsigned int per_block_y = generator.per_block_y;
@@ -98,23 +79,14 @@ namespace psmpm
         const double       hy          = mesh.height / mesh.blocks_y;
         const double       volume      = hx * hy / (per_block_x * per_block_y);
         std::uint64_t      id          = 0;
-        unsigned int       hint        = 0;
         for (unsigned int bj = 0; bj < mesh.blocks_y; ++bj)
           for (unsigned int bi = 0; bi < mesh.blocks_x; ++bi)
             for (unsigned int j = 0; j < per_block_y; ++j)
               for (unsigned int i = 0; i < per_block_x; ++i, ++id)
-                add_block_particle(id,
-                                   Point<2>(hx * (bi + (i + 0.5) / per_block_x),
-                                            hy *
-                                              (bj + (j + 0.5) / per_block_y)),
-                                   volume,
-                                   locator,
-                                   density,
-                                   is_owned,
-                                   classify,
-                                   partial,
-                                   hint,
-                                   particles);
+                add(id,
+                    Point<2>(hx * (bi + (i + 0.5) / per_block_x),
+                             hy * (bj + (j + 0.5) / per_block_y)),
+                    volume);
       }
 
       /// 2D Gmsh meshes: every triangle split into per_cell^2 similar
@@ -342,30 +314,33 @@ namespace psmpm
           &tria);
       const bool partial = par != nullptr;
       const auto place   = [&](const auto &classify) {
+        // The block layouts' points come in block order: each one's cell
+        // is searched from the previous point's.
+        unsigned int hint = 0;
+        const auto   add  = [&](const std::uint64_t id,
+                             const Point<dim>   &x,
+                             const double        volume) {
+          add_block_particle(id,
+                             x,
+                             volume,
+                             locator,
+                             densities,
+                             is_owned,
+                             classify,
+                             partial,
+                             hint,
+                             particles);
+        };
         if constexpr (dim == 1)
           {
             (void)tria;
             check_count(mesh);
-            generate_lines(*this,
-                           mesh,
-                           locator,
-                           densities,
-                           is_owned,
-                           classify,
-                           partial,
-                           particles);
+            generate_lines(*this, mesh, add);
           }
         else if (mesh.type != Mesh::MeshGenerator<dim>::Type::gmsh)
           {
             check_count(mesh);
-            generate_blocks(*this,
-                            mesh,
-                            locator,
-                            densities,
-                            is_owned,
-                            classify,
-                            partial,
-                            particles);
+            generate_blocks(*this, mesh, add);
           }
         else
           generate_per_cell(*this,
