@@ -21,9 +21,12 @@ namespace psmpm
     EnergyStatistics<dim>::accumulate(const Simulator::State<dim> &state,
                                       const std::size_t            first,
                                       const std::size_t            last,
-                                      Energies<dim>               &e) const
+                                      Energies<dim>               &sums) const
     {
       const auto &particles = state.particles;
+      // The sums in registers, not through the reference (as in
+      // RotationStatistics::accumulate); same operations, same order.
+      Energies<dim> e = sums;
       for (std::size_t begin = first; begin < last; begin += chunk)
         {
           const std::size_t end = std::min(last, begin + chunk);
@@ -41,6 +44,7 @@ namespace psmpm
               e.mass += m;
             }
         }
+      sums = e;
     }
 
     template <int dim>

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/base/prefetch.h>
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/point_accumulation.h>
 
@@ -122,6 +123,41 @@ namespace psmpm
 
 
 
+      namespace
+      {
+        /// What move_particles() reads of particle @p p first in a step.
+        template <int dim, VelocityUpdate velocity_update, typename N>
+        DEAL_II_ALWAYS_INLINE inline void
+        prefetch_particle(const State<dim> &state,
+                          const std::size_t p,
+                          const N           n)
+        {
+          if constexpr (std::is_integral_v<N>)
+            {
+              // A count known at run time only (no common basis).
+              prefetch_lines(&state.shape_values[p * n]);
+              if (!state.gradients_per_cell)
+                prefetch_lines(&state.shape_gradients[p * n]);
+            }
+          else
+            {
+              prefetch_lines<N::value * sizeof(double)>(
+                &state.shape_values[p * n]);
+              if (!state.gradients_per_cell)
+                prefetch_lines<N::value * sizeof(Tensor<1, dim>)>(
+                  &state.shape_gradients[p * n]);
+            }
+          const auto &particles = state.particles;
+          prefetch_lines(&particles.cell[p]);
+          prefetch_lines(&particles.position[p]);
+          prefetch_lines(&particles.displacement[p]);
+          if constexpr (velocity_update == VelocityUpdate::flip)
+            prefetch_lines(&particles.velocity[p]);
+        }
+      } // namespace
+
+
+
       template <int dim, VelocityUpdate velocity_update>
       void
       move_particles(State<dim> &state, std::vector<Tensor<2, dim>> &increments)
@@ -148,6 +184,11 @@ namespace psmpm
         with_functions_per_cell(state.grid->dofs_per_cell, [&](const auto n) {
           for (std::size_t p = first; p < last; ++p)
             {
+              // The first loop of a chunk to read these (prefetch.h),
+              // also past the chunk's end: the next chunk follows soon.
+              const std::size_t ahead = p + prefetch_distance;
+              if (ahead < particles.size())
+                prefetch_particle<dim, velocity_update>(state, ahead, n);
               const unsigned int    cell = particles.cell[p];
               const unsigned int    base = cell * n;
               const double         *phi  = &state.shape_values[p * n];

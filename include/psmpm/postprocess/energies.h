@@ -48,13 +48,13 @@ namespace psmpm
       compute(const Simulator::State<dim> &state) const;
 
       /// This rank's particles [@p first, @p last) added to the local
-      /// sums @p e, in particle order (compute() is accumulate() over all
+      /// sums @p sums, in particle order (compute() is accumulate() over all
       /// particles, then reduce()).
       void
       accumulate(const Simulator::State<dim> &state,
                  const std::size_t            first,
                  const std::size_t            last,
-                 Energies<dim>               &e) const;
+                 Energies<dim>               &sums) const;
 
       /// The sums of all ranks.
       static Energies<dim>
