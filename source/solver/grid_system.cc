@@ -1225,7 +1225,7 @@ namespace psmpm
           for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
             if (constrained[d][owned_to_relevant[j]])
               fixed_rows[d].push_back(j);
-          block_jacobi[d].initialize(M, block, fixed_rows[d]);
+          block_jacobi[d].initialize(M, block, fixed_rows[d], generation);
           factored[d] = false;
         }
     }
@@ -1446,7 +1446,10 @@ namespace psmpm
           else if (parameters.preconditioner == "pmg")
             assemble_multigrid(d);
           else if (vertex_blocks(parameters.preconditioner, space))
-            block_jacobi[d].initialize(matrix[d], space.dofs_per_vertex());
+            block_jacobi[d].initialize(matrix[d],
+                                       space.dofs_per_vertex(),
+                                       {},
+                                       generation);
           else
             jacobi[d].initialize(matrix[d]);
         }

@@ -50,32 +50,15 @@ namespace psmpm
       }
     } // namespace
 
-    void
-    VertexBlockJacobi::initialize(const TrilinosWrappers::SparseMatrix &A,
-                                  const unsigned int block_size_in,
-                                  const std::vector<unsigned int> &fixed)
+    bool
+    VertexBlockJacobi::find_block_entries(const Epetra_CrsMatrix &crs)
     {
-      AssertThrow(block_size_in >= 1 && block_size_in <= max_block,
-                  ExcMessage("VertexBlockJacobi: block size " +
-                             std::to_string(block_size_in) + " outside 1.." +
-                             std::to_string(max_block)));
-      const Epetra_CrsMatrix &crs = A.trilinos_matrix();
-      block_size                  = block_size_in;
-      n_rows                      = crs.NumMyRows();
-      AssertThrow(n_rows % block_size == 0,
-                  ExcMessage("VertexBlockJacobi: " + std::to_string(n_rows) +
-                             " owned rows are not whole blocks of " +
-                             std::to_string(block_size)));
       const unsigned int n = block_size;
-      inverse.assign(std::size_t(n_rows) * n, 0.);
-      fallbacks = 0;
-      int    *offsets, *columns;
-      double *entries;
+      int               *offsets, *columns;
+      double            *entries;
       crs.ExtractCrsDataPointers(offsets, columns, entries);
-      std::array<int, max_block>                local_column;
-      std::array<double, max_block * max_block> block;
-      std::array<bool, max_block>               masked;
-      auto                                      next_fixed = fixed.begin();
+      block_entries.assign(std::size_t(n_rows) * n, -1);
+      std::array<int, max_block> local_column;
       for (unsigned int b = 0; b < n_rows / n; ++b)
         {
           const unsigned int first_row = b * n;
@@ -87,27 +70,100 @@ namespace psmpm
                                      "vertex are not numbered consecutively"));
               local_column[i] = crs.LCID(first_gid + int(i));
             }
-          block.fill(0.);
-          // The block's local columns are usually consecutive: then one
-          // subtraction and comparison per row entry finds its block
-          // column (three comparisons per entry otherwise).
-          bool consecutive = true;
-          for (unsigned int j = 1; j < n; ++j)
-            consecutive =
-              consecutive && local_column[j] == local_column[0] + int(j);
           for (unsigned int i = 0; i < n; ++i)
             for (int k = offsets[first_row + i]; k < offsets[first_row + i + 1];
                  ++k)
-              if (consecutive)
-                {
-                  const unsigned int j = columns[k] - local_column[0];
-                  if (j < n)
-                    block[i * n + j] += entries[k];
-                }
-              else
-                for (unsigned int j = 0; j < n; ++j)
-                  if (columns[k] == local_column[j])
-                    block[i * n + j] += entries[k];
+              for (unsigned int j = 0; j < n; ++j)
+                if (columns[k] == local_column[j])
+                  {
+                    int &entry =
+                      block_entries[std::size_t(first_row + i) * n + j];
+                    // A column twice in a row (not in a filled Epetra
+                    // matrix): its entries are summed by the search.
+                    if (entry >= 0)
+                      return false;
+                    entry = k;
+                  }
+        }
+      return true;
+    }
+
+
+
+    void
+    VertexBlockJacobi::add_block_by_search(const Epetra_CrsMatrix &crs,
+                                           const unsigned int      first_row,
+                                           double                 *block) const
+    {
+      const unsigned int n = block_size;
+      int               *offsets, *columns;
+      double            *entries;
+      crs.ExtractCrsDataPointers(offsets, columns, entries);
+      std::array<int, max_block> local_column;
+      for (unsigned int j = 0; j < n; ++j)
+        local_column[j] = crs.LCID(crs.GRID(first_row) + int(j));
+      for (unsigned int i = 0; i < n; ++i)
+        for (int k = offsets[first_row + i]; k < offsets[first_row + i + 1];
+             ++k)
+          for (unsigned int j = 0; j < n; ++j)
+            if (columns[k] == local_column[j])
+              block[i * n + j] += entries[k];
+    }
+
+
+
+    void
+    VertexBlockJacobi::initialize(const TrilinosWrappers::SparseMatrix &A,
+                                  const unsigned int block_size_in,
+                                  const std::vector<unsigned int> &fixed,
+                                  const std::uint64_t              pattern)
+    {
+      AssertThrow(block_size_in >= 1 && block_size_in <= max_block,
+                  ExcMessage("VertexBlockJacobi: block size " +
+                             std::to_string(block_size_in) + " outside 1.." +
+                             std::to_string(max_block)));
+      const Epetra_CrsMatrix &crs = A.trilinos_matrix();
+      AssertThrow(crs.NumMyRows() % block_size_in == 0,
+                  ExcMessage(
+                    "VertexBlockJacobi: " + std::to_string(crs.NumMyRows()) +
+                    " owned rows are not whole blocks of " +
+                    std::to_string(block_size_in)));
+      // Where the blocks' entries are in the value array depends on the
+      // sparsity pattern alone: found once per pattern (the map look-ups
+      // and the search through each row cost more than the inversions).
+      const bool same_pattern =
+        entries_found && pattern != 0 && pattern == entries_pattern &&
+        block_size == block_size_in && n_rows == unsigned(crs.NumMyRows());
+      block_size = block_size_in;
+      n_rows     = crs.NumMyRows();
+      if (!same_pattern)
+        {
+          entries_found   = find_block_entries(crs);
+          entries_pattern = pattern;
+        }
+      const unsigned int n = block_size;
+      inverse.assign(std::size_t(n_rows) * n, 0.);
+      fallbacks = 0;
+      int    *offsets, *columns;
+      double *entries;
+      crs.ExtractCrsDataPointers(offsets, columns, entries);
+      std::array<double, max_block * max_block> block;
+      std::array<bool, max_block>               masked;
+      auto                                      next_fixed = fixed.begin();
+      for (unsigned int b = 0; b < n_rows / n; ++b)
+        {
+          const unsigned int first_row = b * n;
+          // 0 + a, as the sum over the row's entries gave (-0 becomes +0).
+          block.fill(0.);
+          if (entries_found)
+            {
+              const int *at = &block_entries[std::size_t(first_row) * n];
+              for (unsigned int ij = 0; ij < n * n; ++ij)
+                if (at[ij] >= 0)
+                  block[ij] += entries[at[ij]];
+            }
+          else
+            add_block_by_search(crs, first_row, block.data());
           // Masked rows: a unit row and column for the inversion, zero
           // afterwards (the block of P A P on the free DoFs, inverted).
           bool any_masked = false;

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace psmpm
@@ -47,10 +48,19 @@ namespace psmpm
       /// are masked: their rows and columns of the inverse are zero, as
       /// for a matrix P A P whose fixed DoFs are projected out
       /// (ComponentCG).
+      ///
+      /// A non-zero @p pattern names A's sparsity pattern (GridSystem
+      /// counts its patterns): while it is that of the last call, the
+      /// positions of the blocks' entries in A's value array are those
+      /// found then, and the set-up only gathers and inverts (the map
+      /// look-ups and the search through the rows had cost 2-3 % of a
+      /// Powell-Sabin step on the throughput bar; doc/performance.md,
+      /// stop 42). 0: they are found again.
       void
       initialize(const TrilinosWrappers::SparseMatrix &A,
                  const unsigned int                    block_size,
-                 const std::vector<unsigned int>      &fixed = {});
+                 const std::vector<unsigned int>      &fixed   = {},
+                 const std::uint64_t                   pattern = 0);
 
       /// dst = D^{-1} src (owned entries).
       void
@@ -77,10 +87,26 @@ namespace psmpm
       }
 
     private:
+      /// Positions of each block's entries in the value array
+      /// (block_entries, -1 where the pattern has none); false if a row
+      /// holds a column twice, which one position cannot represent.
+      bool
+      find_block_entries(const Epetra_CrsMatrix &crs);
+
+      /// The block of the rows from @p first_row, summed from a search
+      /// through the rows (where find_block_entries() failed).
+      void
+      add_block_by_search(const Epetra_CrsMatrix &crs,
+                          unsigned int            first_row,
+                          double                 *block) const;
+
       unsigned int        block_size = 1;
       unsigned int        n_rows     = 0;
       unsigned int        fallbacks  = 0;
       std::vector<double> inverse; ///< row-major block inverses
+      std::vector<int>    block_entries;
+      bool                entries_found   = false;
+      std::uint64_t       entries_pattern = 0;
     };
   } // namespace Solver
 } // namespace psmpm
