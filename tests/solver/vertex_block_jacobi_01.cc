@@ -10,13 +10,19 @@
 // (d) the thesis bar (Powell-Sabin, consistent mass, 8 blocks, every
 //     system through CG: Direct solver size = 0) with point and block
 //     Jacobi: block Jacobi needs at most 0.6 of the CG iterations and
-//     ends with the same displacement error to 1e-8 relative.
+//     ends with the same displacement error to 1e-8 relative;
+// (e) the entry positions kept for a numbered sparsity pattern: on a
+//     matrix that couples the blocks, a set-up after new values with the
+//     same pattern number, and one for another pattern under a new
+//     number, give bit for bit the inverse of a set-up that searches
+//     afresh (pattern 0), and the new values are seen.
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <psmpm/solver/vertex_block_jacobi.h>
 
 #include "../mpm_tests.h"
 
+#include <cstring>
 #include <filesystem>
 
 namespace
@@ -41,6 +47,38 @@ namespace
     return A;
   }
 
+  /// 3 x 3 blocks on the diagonal, coupled to their neighbours at
+  /// distance @p reach blocks (a pattern with entries outside the
+  /// blocks, at positions that depend on @p reach), the values a function
+  /// of the indices and @p scale (diagonally dominant).
+  TrilinosWrappers::SparseMatrix
+  coupled_matrix(const unsigned int n_blocks,
+                 const unsigned int reach,
+                 const double       scale)
+  {
+    const unsigned int     n = 3 * n_blocks;
+    DynamicSparsityPattern dsp(n, n);
+    const auto coupled = [&](const unsigned int i, const unsigned int j) {
+      const unsigned int bi = i / 3, bj = j / 3;
+      return bi == bj || bi == bj + reach || bj == bi + reach;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (coupled(i, j))
+          dsp.add(i, j);
+    TrilinosWrappers::SparseMatrix A;
+    A.reinit(complete_index_set(n), complete_index_set(n), dsp, MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (coupled(i, j))
+          A.set(i,
+                j,
+                i == j ? 8 * scale :
+                         scale * 0.3 * std::cos(0.37 * (i + 1) * (j + 1)));
+    A.compress(VectorOperation::insert);
+    return A;
+  }
+
   TrilinosWrappers::MPI::Vector
   vector(const unsigned int n)
   {
@@ -55,13 +93,13 @@ namespace
   std::pair<double, double>
   thesis_bar(const std::string &preconditioner)
   {
-    auto solver = make_scene_solver(
-      "vibrating_bar_small_ps.prm",
-      {"Mesh/Blocks x=8",
-       "Time/End time=0.002",
-       "Output/Interval=0",
-       "Mass matrix/Direct solver size=0",
-       "Mass matrix/Preconditioner=" + preconditioner});
+    auto solver =
+      make_scene_solver("vibrating_bar_small_ps.prm",
+                        {"Mesh/Blocks x=8",
+                         "Time/End time=0.002",
+                         "Output/Interval=0",
+                         "Mass matrix/Direct solver size=0",
+                         "Mass matrix/Preconditioner=" + preconditioner});
     const std::string dir = "run-" + preconditioner.substr(0, 5);
     std::filesystem::create_directories(dir);
     AssertThrow(solver->run(dir) == psmpm::Simulator::Status::completed,
@@ -77,8 +115,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  psmpm::MPISession                mpi(argc, argv);
-  std::ofstream                    out("output");
+  psmpm::MPISession mpi(argc, argv);
+  std::ofstream     out("output");
   using psmpm::Solver::VertexBlockJacobi;
 
   out << "(a) exact inverse of a block-diagonal matrix" << std::endl;
@@ -100,8 +138,8 @@ main(int argc, char **argv)
   out << "(b) a block that is not positive definite" << std::endl;
   {
     const std::array<double, 9> singular = {1, 1, 0, 1, 1, 0, 0, 0, 2};
-    const auto        A = block_matrix({spd1, singular, spd2});
-    VertexBlockJacobi P;
+    const auto                  A        = block_matrix({spd1, singular, spd2});
+    VertexBlockJacobi           P;
     P.initialize(A, 3);
     const auto b = vector(9);
     auto       x = b, r = b;
@@ -132,7 +170,8 @@ main(int argc, char **argv)
       {
         message = e.get_exc_name() + std::string(e.what());
       }
-    PSMPM_CHECK(out, message.find("not whole blocks of 4") != std::string::npos);
+    PSMPM_CHECK(out,
+                message.find("not whole blocks of 4") != std::string::npos);
   }
 
   out << "(d) thesis bar, point against block Jacobi" << std::endl;
@@ -142,4 +181,45 @@ main(int argc, char **argv)
       << block.first / point.first << std::endl;
   PSMPM_CHECK(out, block.first <= 0.6 * point.first);
   PSMPM_CHECK(out, std::abs(block.second / point.second - 1) < 1e-8);
+
+  out << "(e) entry positions kept per sparsity pattern" << std::endl;
+  {
+    const auto b     = vector(30);
+    const auto apply = [&](const VertexBlockJacobi &P) {
+      auto x = b;
+      P.vmult(x, b);
+      return x;
+    };
+    const auto fresh = [&](const TrilinosWrappers::SparseMatrix &A) {
+      VertexBlockJacobi Q;
+      Q.initialize(A, 3, {1, 14});
+      return apply(Q);
+    };
+    const auto same_bits = [](const TrilinosWrappers::MPI::Vector &x,
+                              const TrilinosWrappers::MPI::Vector &y) {
+      for (unsigned int i = 0; i < x.size(); ++i)
+        {
+          const double a = x[i], c = y[i];
+          if (std::memcmp(&a, &c, sizeof(double)) != 0)
+            return false;
+        }
+      return true;
+    };
+    VertexBlockJacobi P;
+    const auto        A1 = coupled_matrix(10, 1, 1.);
+    P.initialize(A1, 3, {1, 14}, 7);
+    const auto x1 = apply(P);
+    PSMPM_CHECK(out, same_bits(x1, fresh(A1)));
+    // New values, same pattern and number: the kept positions.
+    const auto A2 = coupled_matrix(10, 1, 2.);
+    P.initialize(A2, 3, {1, 14}, 7);
+    const auto x2 = apply(P);
+    PSMPM_CHECK(out, same_bits(x2, fresh(A2)));
+    PSMPM_CHECK(out, !same_bits(x2, x1));
+    // Another pattern (couplings at distance 2: other positions) under a
+    // new number.
+    const auto A3 = coupled_matrix(10, 2, 3.);
+    P.initialize(A3, 3, {1, 14}, 8);
+    PSMPM_CHECK(out, same_bits(apply(P), fresh(A3)));
+  }
 }
