@@ -21,10 +21,13 @@ namespace psmpm
    * statistic reading the initial positions, ...) waited for memory at
    * the start of every run and page, which the hardware prefetcher
    * learns anew (doc/performance.md, "Prefetching the chunks' arrays
-   * (stop 42)"). 16 particles are 1-3 us of work per loop for
-   * Powell-Sabin, 0.1-0.5 us for P1: more than an access to memory.
+   * (stop 42)"). 64 particles ahead is 0.6-3 us of work per loop for
+   * Powell-Sabin, 0.2-0.6 us for P1, and 25 kB of a chunk's arrays:
+   * against 16, 32 gave lumped P1 a 9 % shorter loop and 64 another 5 %,
+   * with Powell-Sabin within the noise (paired runs on the throughput
+   * bar).
    */
-  constexpr std::size_t prefetch_distance = 16;
+  constexpr std::size_t prefetch_distance = 64;
 
   /**
    * Request the cache lines of the @p bytes from @p begin, which the
