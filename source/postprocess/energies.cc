@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/base/prefetch.h>
 #include <psmpm/postprocess/energies.h>
 
 namespace psmpm
@@ -36,6 +37,13 @@ namespace psmpm
                                          energy_density.data());
           for (std::size_t p = begin; p < end; ++p)
             {
+              // The first loop of the update's chunks to read these
+              // (prefetch.h).
+              if (p + prefetch_distance < particles.size())
+                {
+                  prefetch_lines(&particles.mass[p + prefetch_distance]);
+                  prefetch_lines(&particles.velocity[p + prefetch_distance]);
+                }
               const double m = particles.mass[p];
               e.kinetic += 0.5 * m * particles.velocity[p].norm_square();
               e.strain += particles.volume[p] * energy_density[p - begin];

@@ -4,6 +4,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/base/prefetch.h>
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
@@ -171,6 +172,13 @@ namespace psmpm
       state.materials.update(particles, first, last, increments, volume_ratio);
       for (std::size_t p = first; p < last; ++p)
         {
+          // The first loop of the update's chunks to read these
+          // (prefetch.h).
+          if (p + prefetch_distance < particles.size())
+            {
+              prefetch_lines(&particles.volume[p + prefetch_distance]);
+              prefetch_lines(&particles.density[p + prefetch_distance]);
+            }
           particles.volume[p] *= volume_ratio[p - first];
           particles.density[p] /= volume_ratio[p - first];
           if (!(particles.volume[p] > 0))

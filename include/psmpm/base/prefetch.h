@@ -36,11 +36,8 @@ namespace psmpm
    * 64 B line: an element of at most 64 B needs one (a loop that requests
    * every element's first line in turn requests every line of the
    * array), the basis of a Powell-Sabin particle (72 B of values, 144 B
-   * of gradients) two and three.
-   *
-   * (A variant that checked the bounds itself, once per array, made the
-   * Powell-Sabin update 15 % slower than the same requests behind one
-   * check per particle: doc/performance.md.)
+   * of gradients) two and three (the line a request leaves out is the
+   * first of the next particle's).
    */
   template <std::size_t bytes = 1>
   inline void
