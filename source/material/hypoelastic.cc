@@ -1,7 +1,6 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <psmpm/base/prefetch.h>
 #include <psmpm/material/hypoelastic.h>
 
 namespace psmpm
@@ -90,13 +89,7 @@ namespace psmpm
           const unsigned int stride = this->state_stride();
           for (unsigned int i = 0; i < n; ++i)
             {
-              // The first loop of the update's chunks to read these
-              // (prefetch.h).
-              if (i + prefetch_distance < n)
-                {
-                  prefetch_lines(stress + i + prefetch_distance);
-                  prefetch_lines(state + (i + prefetch_distance) * stride);
-                }
+              this->request_ahead(n, stress, state, stride, i);
               const SymmetricTensor<2, 2> de = symmetrize(dL[i]);
               const double dw = 0.5 * (dL[i][0][1] - dL[i][1][0]); // w_xy
               const double tr = trace(de);

@@ -1,7 +1,6 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <psmpm/base/prefetch.h>
 #include <psmpm/material/neo_hookean.h>
 
 #include <algorithm>
@@ -91,13 +90,7 @@ namespace psmpm
       const unsigned int s      = this->state_stride();
       for (unsigned int p = 0; p < n; ++p)
         {
-          // The first loop of the update's chunks to read these
-          // (prefetch.h).
-          if (p + prefetch_distance < n)
-            {
-              prefetch_lines(stress + p + prefetch_distance);
-              prefetch_lines(state + (p + prefetch_distance) * s);
-            }
+          this->request_ahead(n, stress, state, s, p);
           double *const F = state + p * s;
 
           // dF = A^{-1} B with A = I - dL/2, B = I + dL/2.

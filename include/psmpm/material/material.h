@@ -8,6 +8,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <psmpm/base/prefetch.h>
 #include <psmpm/base/registry.h>
 
 #include <cmath>
@@ -104,6 +105,26 @@ namespace psmpm
       set_state_stride(const unsigned int s)
       {
         stride = s;
+      }
+
+      /**
+       * For update() loops: request the stress and the state block
+       * (@p stride apart) of particle @p i + prefetch_distance of the
+       * @p n, if there is one. In the update's chunks the material is the
+       * first to read them (base/prefetch.h; a hint, no value changes).
+       */
+      static void
+      request_ahead(const unsigned int             n,
+                    const SymmetricTensor<2, dim> *stress,
+                    const double                  *state,
+                    const unsigned int             stride,
+                    const unsigned int             i)
+      {
+        const std::size_t ahead = i + prefetch_distance;
+        if (ahead >= n)
+          return;
+        prefetch_lines(stress + ahead);
+        prefetch_lines(state + ahead * stride);
       }
 
       /// Initial state of @p n particles (the first n_state() values of
