@@ -92,10 +92,25 @@ namespace psmpm
           for (std::size_t p = first_p; p < last_p; ++p)
             {
               // In the update's chunks (prefetch.h) only this loop reads
-              // the initial positions.
+              // the initial positions; with the affine part (APIC, one
+              // pass over all particles) also the affine matrices and the
+              // basis values.
               if (p + prefetch_distance < particles.size())
-                prefetch_lines(
-                  &particles.initial_position[p + prefetch_distance]);
+                {
+                  const std::size_t ahead = p + prefetch_distance;
+                  prefetch_lines(&particles.initial_position[ahead]);
+                  if (affine)
+                    {
+                      prefetch_lines<sizeof(Tensor<2, 2>)>(
+                        &particles.affine[ahead]);
+                      prefetch_lines(&particles.cell[ahead]);
+                      // n values: 24 B for P1, 72 B (two lines) for
+                      // Powell-Sabin.
+                      prefetch_lines(&state.shape_values[ahead * n]);
+                      if (n > 8)
+                        prefetch_lines(&state.shape_values[ahead * n + 8]);
+                    }
+                }
               const double        m  = particles.mass[p];
               const Point<2>     &x  = particles.position[p];
               const Tensor<1, 2>  r  = x - centre;
