@@ -160,6 +160,21 @@ namespace psmpm
 
 
     template <int dim>
+    void
+    Material<dim>::set_initial_stress(const unsigned int,
+                                      const SymmetricTensor<2, dim> *,
+                                      const double *,
+                                      double *) const
+    {
+      AssertThrow(false,
+                  ExcMessage(path + "/Model = " + name() +
+                             ": this model cannot start from a prescribed "
+                             "initial stress."));
+    }
+
+
+
+    template <int dim>
     double
     Material<dim>::wave_speed(const SymmetricTensor<2, dim> &,
                               const double *) const

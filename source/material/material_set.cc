@@ -190,6 +190,26 @@ namespace psmpm
 
     template <int dim>
     void
+    MaterialSet<dim>::set_initial_stress(Particles::ParticleSet<dim> &particles,
+                                         const double *out_of_plane) const
+    {
+      double *state = particles.state.data();
+      for_each_run(particles,
+                   [&](const Material<dim> &m,
+                       const unsigned int   offset,
+                       const std::size_t    begin,
+                       const std::size_t    end) {
+                     m.set_initial_stress(end - begin,
+                                          particles.stress.data() + begin,
+                                          out_of_plane + begin,
+                                          state + begin * stride + offset);
+                   });
+    }
+
+
+
+    template <int dim>
+    void
     MaterialSet<dim>::update(Particles::ParticleSet<dim> &particles,
                              const std::size_t            first,
                              const std::size_t            last,
@@ -236,6 +256,42 @@ namespace psmpm
                                       state + begin * stride + offset,
                                       energy + (begin - first));
                    });
+    }
+
+
+
+    template <int dim>
+    void
+    MaterialSet<dim>::dissipated_energy(
+      const Particles::ParticleSet<dim> &particles,
+      const std::size_t                  first,
+      const std::size_t                  last,
+      double                            *per_unit_mass) const
+    {
+      const double *state = particles.state.data();
+      for_each_run(particles,
+                   first,
+                   last,
+                   [&](const Material<dim> &m,
+                       const unsigned int   offset,
+                       const std::size_t    begin,
+                       const std::size_t    end) {
+                     m.dissipated_energy(end - begin,
+                                         state + begin * stride + offset,
+                                         per_unit_mass + (begin - first));
+                   });
+    }
+
+
+
+    template <int dim>
+    bool
+    MaterialSet<dim>::dissipates() const
+    {
+      for (const auto *m : used)
+        if (m->dissipates())
+          return true;
+      return false;
     }
 
 

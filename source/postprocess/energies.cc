@@ -28,6 +28,7 @@ namespace psmpm
       // The sums in registers, not through the reference (as in
       // RotationStatistics::accumulate); same operations, same order.
       Energies<dim> e = sums;
+      e.dissipative   = state.materials.dissipates();
       for (std::size_t begin = first; begin < last; begin += chunk)
         {
           const std::size_t end = std::min(last, begin + chunk);
@@ -51,6 +52,15 @@ namespace psmpm
               e.momentum += m * particles.velocity[p];
               e.mass += m;
             }
+          if (e.dissipative)
+            {
+              state.materials.dissipated_energy(particles,
+                                                begin,
+                                                end,
+                                                dissipation.data());
+              for (std::size_t p = begin; p < end; ++p)
+                e.dissipated += particles.mass[p] * dissipation[p - begin];
+            }
         }
       sums = e;
     }
@@ -60,9 +70,12 @@ namespace psmpm
     EnergyStatistics<dim>::reduce(const Energies<dim> &local, MPI_Comm comm)
     {
       Energies<dim> e;
-      e.kinetic  = Utilities::MPI::sum(local.kinetic, comm);
-      e.strain   = Utilities::MPI::sum(local.strain, comm);
-      e.gravity  = Utilities::MPI::sum(local.gravity, comm);
+      e.kinetic     = Utilities::MPI::sum(local.kinetic, comm);
+      e.strain      = Utilities::MPI::sum(local.strain, comm);
+      e.gravity     = Utilities::MPI::sum(local.gravity, comm);
+      e.dissipative = local.dissipative;
+      if (e.dissipative)
+        e.dissipated = Utilities::MPI::sum(local.dissipated, comm);
       e.mass     = Utilities::MPI::sum(local.mass, comm);
       e.momentum = Utilities::MPI::sum(local.momentum, comm);
       return e;
@@ -76,6 +89,12 @@ namespace psmpm
       statistics.add_value("kinetic_energy", e.kinetic);
       statistics.add_value("strain_energy", e.strain);
       statistics.add_value("gravity_energy", e.gravity);
+      if (e.dissipative)
+        {
+          statistics.add_value("dissipated_energy", e.dissipated);
+          statistics.set_scientific("dissipated_energy", true);
+          statistics.set_precision("dissipated_energy", 8);
+        }
       statistics.add_value("total_energy", e.total());
       statistics.add_value("mass", e.mass);
       const char *names[] = {"momentum_x", "momentum_y"};

@@ -46,6 +46,27 @@ namespace psmpm
              double                  *state,
              double                  *volume_ratio) const override;
 
+      bool
+      accepts_initial_stress() const override
+      {
+        return true;
+      }
+
+      /// The out-of-plane (2D) or lateral (1D) stress into the state's
+      /// first column; the strains stay zero (the initial stress is
+      /// the reference state).
+      void
+      set_initial_stress(const unsigned int             n,
+                         const SymmetricTensor<2, dim> *stress,
+                         const double                  *out_of_plane,
+                         double                        *state) const override
+      {
+        (void)stress;
+        const unsigned int s = this->state_stride();
+        for (unsigned int i = 0; i < n; ++i)
+          state[i * s] = out_of_plane[i];
+      }
+
       /// Complementary energy of isotropic Hooke's law with all three
       /// normal stresses (sigma_zz or the lateral stresses included).
       void

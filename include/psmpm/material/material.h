@@ -146,6 +146,54 @@ namespace psmpm
              double                  *state,
              double                  *volume_ratio) const = 0;
 
+      /**
+       * Whether the model can start from a prescribed Cauchy stress (the
+       * geostatic or expression initial stress of "Initial conditions").
+       * Rate models (hypoelastic, plasticity) can; models whose stress
+       * follows from a deformation gradient cannot, and such a scene is
+       * refused as bad input.
+       */
+      virtual bool
+      accepts_initial_stress() const
+      {
+        return false;
+      }
+
+      /**
+       * Make the state of @p n particles consistent with an initial stress:
+       * the in-plane stress is already in @p stress[i]; @p out_of_plane[i]
+       * is sigma_zz (2D, plane strain) or the lateral stress (1D). Called
+       * after initialize(); only if accepts_initial_stress().
+       */
+      virtual void
+      set_initial_stress(const unsigned int             n,
+                         const SymmetricTensor<2, dim> *stress,
+                         const double                  *out_of_plane,
+                         double                        *state) const;
+
+      /**
+       * Energy dissipated so far per unit mass [J/kg] of @p n particles
+       * (plastic work); zero for elastic models. The total of a run is
+       * sum_p m_p d_p, so that kinetic + strain + gravity + dissipated
+       * energy is conserved.
+       */
+      virtual void
+      dissipated_energy(const unsigned int n,
+                        const double      *state,
+                        double            *per_unit_mass) const
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          per_unit_mass[i] = 0;
+      }
+
+      /// Whether dissipated_energy() can be non-zero (the statistics skip
+      /// the sum otherwise).
+      virtual bool
+      dissipates() const
+      {
+        return false;
+      }
+
       /// Stored energy per unit current volume of @p n particles.
       virtual void
       energy_density(const unsigned int             n,

@@ -116,6 +116,16 @@ namespace psmpm
       void
       initialize(Particles::ParticleSet<dim> &particles) const;
 
+      /**
+       * Material::set_initial_stress() for every particle: the in-plane
+       * stress is already in particles.stress, @p out_of_plane[i] is the
+       * out-of-plane (2D) or lateral (1D) stress of particle i. After
+       * initialize().
+       */
+      void
+      set_initial_stress(Particles::ParticleSet<dim> &particles,
+                         const double                *out_of_plane) const;
+
       /// Material::update() for the particles [@p first, @p last), whose
       /// increments and volume ratios start at dL[0] and volume_ratio[0].
       void
@@ -132,6 +142,18 @@ namespace psmpm
                      const std::size_t                  first,
                      const std::size_t                  last,
                      double                            *energy) const;
+
+      /// Material::dissipated_energy() [J/kg] for the particles [@p first,
+      /// @p last), into per_unit_mass[0 .. last - first).
+      void
+      dissipated_energy(const Particles::ParticleSet<dim> &particles,
+                        const std::size_t                  first,
+                        const std::size_t                  last,
+                        double                            *per_unit_mass) const;
+
+      /// Whether a material in use can dissipate energy (plasticity).
+      bool
+      dissipates() const;
 
       /// Largest Material::max_wave_speed() over all particles.
       double

@@ -19,19 +19,25 @@ namespace psmpm
     template <int dim>
     struct Energies
     {
-      double         kinetic = 0, strain = 0, gravity = 0;
+      double kinetic = 0, strain = 0, gravity = 0;
+      /// Energy dissipated by plastic flow so far (materials that
+      /// dissipate only; the column dissipated_energy exists then).
+      double         dissipated  = 0;
+      bool           dissipative = false;
       Tensor<1, dim> momentum;
       double         mass = 0;
+      /// What is conserved: kinetic + strain + gravity + dissipated.
       double
       total() const
       {
-        return kinetic + strain + gravity;
+        return kinetic + strain + gravity + dissipated;
       }
-      /// kinetic + strain + |gravity|: the scale of energy errors.
+      /// kinetic + strain + |gravity| + dissipated: the scale of energy
+      /// errors.
       double
       scale() const
       {
-        return kinetic + strain + std::abs(gravity);
+        return kinetic + strain + std::abs(gravity) + dissipated;
       }
     };
 
@@ -69,6 +75,7 @@ namespace psmpm
       /// summed while the chunk is in the cache.
       static constexpr std::size_t      chunk = 512;
       mutable std::array<double, chunk> energy_density;
+      mutable std::array<double, chunk> dissipation;
     };
   } // namespace Postprocess
 } // namespace psmpm

@@ -1,0 +1,184 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_material_plastic_hypoelastic_h
+#define psmpm_material_plastic_hypoelastic_h
+
+#include <psmpm/material/material.h>
+
+#include <array>
+#include <cmath>
+
+namespace psmpm
+{
+  namespace Material
+  {
+    /**
+     * What the soil models share: isotropic linear elasticity in rate form
+     * with an exactly objective rotation, a return map in principal stress
+     * space done by the derived model, and the plastic state.
+     *
+     * Update of one particle (plane strain in 2D, uniaxial strain in 1D):
+     * 1. the stress is rotated by the Hughes-Winget rotation of the spin
+     *    increment, R = (I - W/2)^-1 (I + W/2): R is orthogonal to
+     *    round-off, so a body in rigid rotation keeps its principal
+     *    stresses (and its yield state) exactly, where the first-order
+     *    Jaumann terms of Hypoelastic change them by O(dt^2) per step;
+     * 2. the elastic trial stress sigma + lambda tr(de) I + 2 G de (the
+     *    Jaumann rate of the Cauchy stress, without the -tr(de) sigma term
+     *    of Hypoelastic: the yield function is one of the Cauchy stress);
+     * 3. if the trial stress is outside the yield surface, the model's
+     *    return in principal stress space (the principal directions do
+     *    not change for an isotropic model), mapped back with the trial
+     *    stress' eigenvectors. The plastic strain increment is the
+     *    elastic compliance times the stress correction, so that the
+     *    elastic strain stays C^-1 sigma.
+     *
+     * Softening: cohesion and friction angle fall linearly from their
+     * values to the residual ones as the equivalent plastic strain
+     * kappa = sum sqrt(2/3 de_p^dev : de_p^dev) goes from 0 to Softening
+     * strain. The return is then implicit in kappa (a fixed-point
+     * iteration on kappa_{n+1}, each iterate an exact return for its
+     * parameters), so the stress ends on the surface of the parameters
+     * of the stored kappa.
+     *
+     * State (2D): {"stress_zz", "plastic_strain_xx", "plastic_strain_yy",
+     * "plastic_strain_xy", "plastic_strain_zz",
+     * "equivalent_plastic_strain", "plastic_work", "volume_ratio"}
+     * (tensor shear strain; plastic_work: dissipated energy per unit mass
+     * [J/kg]; volume_ratio: J = V / V_0). 1D: {"stress_lateral",
+     * "plastic_strain_xx", "plastic_strain_lateral",
+     * "equivalent_plastic_strain", "plastic_work", "volume_ratio"}.
+     */
+    template <int dim>
+    class PlasticHypoelastic : public Material<dim>
+    {
+    public:
+      /// The yield and softening constants at one equivalent plastic
+      /// strain, and what the returns derive from them once per batch.
+      struct Strength
+      {
+        double cohesion       = 0;
+        double sin_phi        = 0;
+        double cos_phi        = 1;
+        double sin_psi        = 0;
+        double tension_cutoff = 0; ///< +infinity: none
+        /// Constants the return derives from the above in its prepare()
+        /// (once per batch, or per softened particle).
+        std::array<double, 4> derived = {{0, 0, 0, 0}};
+      };
+
+      /// Friction angle, Dilatancy angle, Cohesion, Tension cutoff,
+      /// Residual cohesion, Residual friction angle, Softening strain.
+      static void
+      declare_entries(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      std::vector<std::string>
+      state_names() const override;
+
+      void
+      initialize(const unsigned int n, double *state) const override;
+
+      bool
+      accepts_initial_stress() const override
+      {
+        return true;
+      }
+
+      void
+      set_initial_stress(const unsigned int             n,
+                         const SymmetricTensor<2, dim> *stress,
+                         const double                  *out_of_plane,
+                         double                        *state) const override;
+
+      void
+      energy_density(const unsigned int             n,
+                     const SymmetricTensor<2, dim> *stress,
+                     const double                  *state,
+                     double                        *energy) const override;
+
+      void
+      dissipated_energy(const unsigned int n,
+                        const double      *state,
+                        double            *per_unit_mass) const override;
+
+      bool
+      dissipates() const override
+      {
+        return true;
+      }
+
+      double
+      max_wave_speed(const unsigned int,
+                     const SymmetricTensor<2, dim> *,
+                     const double *) const override
+      {
+        return this->p_wave_speed();
+      }
+
+      /// The strength at equivalent plastic strain @p kappa.
+      Strength
+      strength(const double kappa) const;
+
+      /// Columns of the state block (offsets within a particle's block).
+      enum Column : unsigned int
+      {
+        out_of_plane = 0,
+        plastic_xx   = 1,
+        // 2D: plastic_yy = 2, plastic_xy = 3, plastic_zz = 4; 1D: the
+        // lateral plastic strain is column 2.
+      };
+      static constexpr unsigned int kappa_column = dim == 1 ? 3 : 5;
+      static constexpr unsigned int work_column  = kappa_column + 1;
+      static constexpr unsigned int ratio_column = kappa_column + 2;
+
+      double friction_angle  = 30; ///< degrees
+      double dilatancy_angle = 0;  ///< degrees
+      double cohesion        = 0;
+      double tension_cutoff  = HUGE_VAL;
+      double residual_cohesion;
+      double residual_friction_angle;
+      double softening_strain = 0; ///< 0: no softening
+
+    protected:
+      /**
+       * The batched update with the return @p ret, called as
+       * `ret(strength, sigma)` with the principal trial stresses sigma
+       * (any order); it returns false for an elastic trial stress, or
+       * true and sigma returned. Templated so that the return is inlined
+       * in the particle loop (no virtual call per particle).
+       */
+      template <typename Return>
+      void
+      update_with(const Return            &ret,
+                  const unsigned int       n,
+                  const Tensor<2, dim>    *dL,
+                  SymmetricTensor<2, dim> *stress,
+                  double                  *state,
+                  double                  *volume_ratio) const;
+
+      /// After the return of the principal stresses @p trial to @p sigma:
+      /// the plastic strain increment C^-1 (trial - sigma) (principal
+      /// frame) and the equivalent plastic strain of @p block, with
+      /// softening the return iterated on kappa_{n+1}.
+      template <typename Return>
+      void
+      finish_return(const Return                &ret,
+                    const std::array<double, 3> &trial,
+                    std::array<double, 3>       &sigma,
+                    double                      *block,
+                    std::array<double, 3>       &plastic_increment) const;
+
+      bool
+      softens() const
+      {
+        return softening_strain > 0;
+      }
+    };
+  } // namespace Material
+} // namespace psmpm
+
+#endif

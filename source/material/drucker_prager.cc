@@ -1,0 +1,198 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/material/drucker_prager.h>
+#include <psmpm/material/plastic_hypoelastic.templates.h>
+
+namespace psmpm
+{
+  namespace Material
+  {
+    namespace
+    {
+      template <int dim>
+      std::unique_ptr<Material<dim>>
+      create_drucker_prager()
+      {
+        return std::make_unique<DruckerPrager<dim>>();
+      }
+
+      const char *const description =
+        "Drucker-Prager plasticity matched to Mohr-Coulomb (Drucker-Prager "
+        "fit: plane strain, outer, inner; Friction angle, Dilatancy angle, "
+        "Cohesion, optional linear softening); Friction angle 0 is von Mises";
+
+      const Registration<MaterialRegistry<1>>
+        registration_1d({"drucker-prager",
+                         description,
+                         create_drucker_prager<1>,
+                         DruckerPrager<1>::declare_entries});
+      const Registration<MaterialRegistry<2>>
+        registration_2d({"drucker-prager",
+                         description,
+                         create_drucker_prager<2>,
+                         DruckerPrager<2>::declare_entries});
+
+      template <int dim>
+      struct DruckerPragerReturn
+      {
+        const DruckerPrager<dim> &model;
+
+        void
+        prepare(typename PlasticHypoelastic<dim>::Strength &s) const
+        {
+          model.prepare(s);
+        }
+
+        /// The elastic test without a square root: sqrt(J2) <= xi c -
+        /// eta p.
+        bool
+        inside(const typename PlasticHypoelastic<dim>::Strength &s,
+               const std::array<double, 3>                      &sigma) const
+        {
+          const double p     = (sigma[0] + sigma[1] + sigma[2]) * (1. / 3);
+          const double bound = s.derived[1] - s.derived[0] * p;
+          const double d0 = sigma[0] - p, d1 = sigma[1] - p, d2 = sigma[2] - p;
+          return bound >= 0 &&
+                 0.5 * (d0 * d0 + d1 * d1 + d2 * d2) <= bound * bound;
+        }
+
+        bool
+        operator()(const typename PlasticHypoelastic<dim>::Strength &s,
+                   std::array<double, 3> &sigma) const
+        {
+          return model.return_stress(s, sigma);
+        }
+      };
+
+      /// eta and xi of the cone that matches Mohr-Coulomb with the angle
+      /// of sine @p s and cosine @p c as @p fit says.
+      template <typename Fit>
+      std::pair<double, double>
+      cone(const Fit fit, const double s, const double c)
+      {
+        switch (fit)
+          {
+            case Fit::plane_strain:
+              {
+                const double tan = s / c;
+                const double r   = std::sqrt(9 + 12 * tan * tan);
+                return {3 * tan / r, 3 / r};
+              }
+            case Fit::outer:
+              return {6 * s / (std::sqrt(3.) * (3 - s)),
+                      6 * c / (std::sqrt(3.) * (3 - s))};
+            default:
+              return {6 * s / (std::sqrt(3.) * (3 + s)),
+                      6 * c / (std::sqrt(3.) * (3 + s))};
+          }
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    DruckerPrager<dim>::declare_entries(ParameterHandler &prm)
+    {
+      PlasticHypoelastic<dim>::declare_entries(prm);
+      prm.declare_entry("Drucker-Prager fit",
+                        "plane strain",
+                        Patterns::Selection("plane strain|outer|inner"),
+                        "drucker-prager: which Mohr-Coulomb surface the cone "
+                        "matches: plane strain (the same plane-strain limit "
+                        "loads for associated flow), outer (through the "
+                        "compressive corners) or inner (the tensile ones).");
+    }
+
+
+
+    template <int dim>
+    void
+    DruckerPrager<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      PlasticHypoelastic<dim>::parse_parameters(prm);
+      const std::string f = prm.get("Drucker-Prager fit");
+      fit                 = f == "outer" ? Fit::outer :
+                            f == "inner" ? Fit::inner :
+                                           Fit::plane_strain;
+    }
+
+
+
+    template <int dim>
+    void
+    DruckerPrager<dim>::prepare(
+      typename PlasticHypoelastic<dim>::Strength &s) const
+    {
+      const auto [eta, xi] = cone(fit, s.sin_phi, s.cos_phi);
+      const double cos_psi = std::sqrt(1 - s.sin_psi * s.sin_psi);
+      s.derived[0]         = eta;
+      s.derived[1]         = xi * s.cohesion;
+      s.derived[2]         = cone(fit, s.sin_psi, cos_psi).first;
+    }
+
+
+
+    template <int dim>
+    bool
+    DruckerPrager<dim>::return_stress(
+      const typename PlasticHypoelastic<dim>::Strength &s,
+      std::array<double, 3>                            &sigma) const
+    {
+      const double eta = s.derived[0], xi_c = s.derived[1],
+                   eta_bar            = s.derived[2];
+      const double                p   = (sigma[0] + sigma[1] + sigma[2]) / 3;
+      const std::array<double, 3> dev = {
+        {sigma[0] - p, sigma[1] - p, sigma[2] - p}};
+      const double q =
+        std::sqrt(0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]));
+      const double f = q + eta * p - xi_c;
+      if (f <= 0)
+        return false;
+      const double G     = this->shear_modulus();
+      const double K     = this->bulk_modulus();
+      const double gamma = f / (G + K * eta * eta_bar);
+      if (q - G * gamma >= 0 && q > 0)
+        {
+          // Onto the cone: the deviator shrinks radially, the mean stress
+          // moves by the potential's dilatancy.
+          const double factor = 1 - G * gamma / q;
+          const double p_new  = p - K * eta_bar * gamma;
+          for (unsigned int d = 0; d < 3; ++d)
+            sigma[d] = factor * dev[d] + p_new;
+        }
+      else
+        {
+          // Past the apex (eta > 0 here: for eta = 0, q - G gamma = xi c
+          // >= 0): the stress is the apex.
+          const double apex = xi_c / eta;
+          sigma             = {{apex, apex, apex}};
+        }
+      return true;
+    }
+
+
+
+    template <int dim>
+    void
+    DruckerPrager<dim>::update(const unsigned int       n,
+                               const Tensor<2, dim>    *dL,
+                               SymmetricTensor<2, dim> *stress,
+                               double                  *state,
+                               double                  *volume_ratio) const
+    {
+      this->update_with(DruckerPragerReturn<dim>{*this},
+                        n,
+                        dL,
+                        stress,
+                        state,
+                        volume_ratio);
+    }
+
+
+
+    template class DruckerPrager<1>;
+    template class DruckerPrager<2>;
+  } // namespace Material
+} // namespace psmpm

@@ -1,0 +1,324 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#include <psmpm/material/mohr_coulomb.h>
+#include <psmpm/material/plastic_hypoelastic.templates.h>
+
+namespace psmpm
+{
+  namespace Material
+  {
+    namespace
+    {
+      template <int dim>
+      std::unique_ptr<Material<dim>>
+      create_mohr_coulomb()
+      {
+        return std::make_unique<MohrCoulomb<dim>>();
+      }
+
+      const char *const description =
+        "Mohr-Coulomb plasticity (Friction angle, Dilatancy angle, Cohesion, "
+        "Tension cutoff, optional linear softening) with the exact return in "
+        "principal stress space; Friction angle 0 is Tresca";
+
+      const Registration<MaterialRegistry<1>>
+        registration_1d({"mohr-coulomb",
+                         description,
+                         create_mohr_coulomb<1>,
+                         PlasticHypoelastic<1>::declare_entries});
+      const Registration<MaterialRegistry<2>>
+        registration_2d({"mohr-coulomb",
+                         description,
+                         create_mohr_coulomb<2>,
+                         PlasticHypoelastic<2>::declare_entries});
+
+      /// A plane in principal stress space (sorted frame): a . sigma <= k,
+      /// with the flow direction b.
+      struct Plane
+      {
+        std::array<double, 3> a, b;
+        double                k;
+      };
+
+      /// Solve the m x m system A x = r (m <= 3) by Gaussian elimination
+      /// with partial pivoting; false if it is singular against @p scale.
+      bool
+      solve_small(const unsigned int m,
+                  double             A[3][3],
+                  double             r[3],
+                  double             x[3])
+      {
+        double norm = 0;
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            norm = std::max(norm, std::abs(A[i][j]));
+        for (unsigned int c = 0; c < m; ++c)
+          {
+            unsigned int p = c;
+            for (unsigned int i = c + 1; i < m; ++i)
+              if (std::abs(A[i][c]) > std::abs(A[p][c]))
+                p = i;
+            if (!(std::abs(A[p][c]) > 1e-10 * norm))
+              return false;
+            if (p != c)
+              {
+                for (unsigned int j = 0; j < m; ++j)
+                  std::swap(A[p][j], A[c][j]);
+                std::swap(r[p], r[c]);
+              }
+            for (unsigned int i = c + 1; i < m; ++i)
+              {
+                const double l = A[i][c] / A[c][c];
+                for (unsigned int j = c; j < m; ++j)
+                  A[i][j] -= l * A[c][j];
+                r[i] -= l * r[c];
+              }
+          }
+        for (int i = int(m) - 1; i >= 0; --i)
+          {
+            double s = r[i];
+            for (unsigned int j = i + 1; j < m; ++j)
+              s -= A[i][j] * x[j];
+            x[i] = s / A[i][i];
+          }
+        return true;
+      }
+
+      /// The largest violation of the Mohr-Coulomb planes and the cutoff
+      /// by the principal stresses @p s (any order).
+      double
+      violation(const std::array<double, 3> &s,
+                const double                 sin_phi,
+                const double                 k,
+                const double                 t)
+      {
+        const double s1 = std::max({s[0], s[1], s[2]});
+        const double s3 = std::min({s[0], s[1], s[2]});
+        return std::max((1 + sin_phi) * s1 - (1 - sin_phi) * s3 - k, s1 - t);
+      }
+
+      template <int dim>
+      struct MohrCoulombReturn
+      {
+        const MohrCoulomb<dim> &model;
+
+        void
+        prepare(typename PlasticHypoelastic<dim>::Strength &s) const
+        {
+          s.derived[0] = 2 * s.cohesion * s.cos_phi;
+        }
+
+        /// The elastic test: sigma_1 and sigma_3 by max/min, no sort.
+        bool
+        inside(const typename PlasticHypoelastic<dim>::Strength &s,
+               const std::array<double, 3>                      &sigma) const
+        {
+          const double s1 = std::max(std::max(sigma[0], sigma[1]), sigma[2]);
+          const double s3 = std::min(std::min(sigma[0], sigma[1]), sigma[2]);
+          return (1 + s.sin_phi) * s1 - (1 - s.sin_phi) * s3 - s.derived[0] <=
+                   0 &&
+                 s1 <= s.tension_cutoff;
+        }
+
+        bool
+        operator()(const typename PlasticHypoelastic<dim>::Strength &s,
+                   std::array<double, 3> &sigma) const
+        {
+          return model.return_stress(s, sigma);
+        }
+      };
+
+      /// The active sets over @p n_planes planes (3 or 6) as bit masks, by
+      /// size (1 to 3) and then by number: built once.
+      struct ActiveSets
+      {
+        explicit ActiveSets(const unsigned int n_planes)
+        {
+          for (unsigned int size = 1; size <= 3; ++size)
+            for (unsigned int m = 1; m < (1u << n_planes); ++m)
+              if (__builtin_popcount(m) == int(size))
+                masks[n_masks++] = m;
+        }
+        unsigned int masks[64];
+        unsigned int n_masks = 0;
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    bool
+    MohrCoulomb<dim>::return_stress(
+      const typename PlasticHypoelastic<dim>::Strength &strength,
+      std::array<double, 3>                            &sigma) const
+    {
+      const double sp = strength.sin_phi,
+                   k  = 2 * strength.cohesion * strength.cos_phi;
+      const double t  = strength.tension_cutoff;
+      // Sorted frame: x[0] >= x[1] >= x[2] are sigma[o[0]], ...
+      std::array<unsigned int, 3> o = {{0, 1, 2}};
+      if (sigma[o[0]] < sigma[o[1]])
+        std::swap(o[0], o[1]);
+      if (sigma[o[1]] < sigma[o[2]])
+        std::swap(o[1], o[2]);
+      if (sigma[o[0]] < sigma[o[1]])
+        std::swap(o[0], o[1]);
+      const std::array<double, 3> x = {{sigma[o[0]], sigma[o[1]], sigma[o[2]]}};
+      if ((1 + sp) * x[0] - (1 - sp) * x[2] - k <= 0 && x[0] <= t)
+        return false;
+
+      const double ss     = strength.sin_psi;
+      const double lambda = this->lame_lambda();
+      const double two_g  = 2 * this->shear_modulus();
+      // The main plane alone, in closed form: the answer for most
+      // yielding particles.
+      {
+        const double                b0 = 1 + ss, b2 = -(1 - ss);
+        const double                tr = b0 + b2;
+        const std::array<double, 3> Db = {
+          {lambda * tr + two_g * b0, lambda * tr, lambda * tr + two_g * b2}};
+        const double a0 = 1 + sp, a2 = -(1 - sp);
+        const double inv_denominator = 1 / (a0 * Db[0] + a2 * Db[2]);
+        const double dl = (a0 * x[0] + a2 * x[2] - k) * inv_denominator;
+        if (dl > 0)
+          {
+            std::array<double, 3> y = {
+              {x[0] - dl * Db[0], x[1] - dl * Db[1], x[2] - dl * Db[2]}};
+            // Refined once (see below).
+            const double d2 = (a0 * y[0] + a2 * y[2] - k) * inv_denominator;
+            for (unsigned int d = 0; d < 3; ++d)
+              y[d] -= d2 * Db[d];
+            if (violation(y, sp, k, t) <=
+                1e-13 * (std::abs(y[0]) + std::abs(y[1]) + std::abs(y[2]) +
+                         strength.cohesion))
+              {
+                for (unsigned int d = 0; d < 3; ++d)
+                  sigma[o[d]] = y[d];
+                return true;
+              }
+          }
+      }
+
+      Plane        planes[6];
+      unsigned int n_planes = 0;
+      // The main plane and the two edge planes of the sextant.
+      planes[n_planes++] = {{{1 + sp, 0, -(1 - sp)}},
+                            {{1 + ss, 0, -(1 - ss)}},
+                            k};
+      planes[n_planes++] = {{{0, 1 + sp, -(1 - sp)}},
+                            {{0, 1 + ss, -(1 - ss)}},
+                            k};
+      planes[n_planes++] = {{{1 + sp, -(1 - sp), 0}},
+                            {{1 + ss, -(1 - ss), 0}},
+                            k};
+      if (std::isfinite(t))
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            Plane p{{{0, 0, 0}}, {{0, 0, 0}}, t};
+            p.a[d] = p.b[d]    = 1;
+            planes[n_planes++] = p;
+          }
+      // D b for each plane: D = lambda 1 1^T + 2 G I in principal space.
+      std::array<double, 3> Db[6];
+      for (unsigned int j = 0; j < n_planes; ++j)
+        {
+          const double tr = planes[j].b[0] + planes[j].b[1] + planes[j].b[2];
+          for (unsigned int d = 0; d < 3; ++d)
+            Db[j][d] = lambda * tr + two_g * planes[j].b[d];
+        }
+
+      static const ActiveSets three(3), six(6);
+      const ActiveSets       &sets = n_planes == 3 ? three : six;
+      for (unsigned int q = 0; q < sets.n_masks; ++q)
+        {
+          unsigned int active[3], m = 0;
+          for (unsigned int j = 0; j < n_planes; ++j)
+            if (sets.masks[q] & (1u << j))
+              active[m++] = j;
+          double A[3][3], A0[3][3], r[3], dl[3];
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              const Plane &pi = planes[active[i]];
+              r[i] = pi.a[0] * x[0] + pi.a[1] * x[1] + pi.a[2] * x[2] - pi.k;
+              for (unsigned int j = 0; j < m; ++j)
+                {
+                  const auto &d = Db[active[j]];
+                  A[i][j]       = A0[i][j] =
+                    pi.a[0] * d[0] + pi.a[1] * d[1] + pi.a[2] * d[2];
+                }
+            }
+          if (!solve_small(m, A, r, dl))
+            continue;
+          double sum      = 0;
+          bool   positive = true;
+          for (unsigned int j = 0; j < m; ++j)
+            sum += std::abs(dl[j]);
+          for (unsigned int j = 0; j < m; ++j)
+            positive = positive && dl[j] >= -1e-12 * sum;
+          if (!positive)
+            continue;
+          std::array<double, 3> y = x;
+          for (unsigned int j = 0; j < m; ++j)
+            for (unsigned int d = 0; d < 3; ++d)
+              y[d] -= dl[j] * Db[active[j]][d];
+          // One step of iterative refinement: the residual of y is round-off
+          // of the trial stress' size, which near the apex can be large
+          // against y itself; recomputed from y it is of y's size.
+          {
+            double r2[3], d2[3];
+            for (unsigned int i = 0; i < m; ++i)
+              {
+                const Plane &pi = planes[active[i]];
+                r2[i] = pi.a[0] * y[0] + pi.a[1] * y[1] + pi.a[2] * y[2] - pi.k;
+              }
+            if (solve_small(m, A0, r2, d2))
+              for (unsigned int j = 0; j < m; ++j)
+                for (unsigned int d = 0; d < 3; ++d)
+                  y[d] -= d2[j] * Db[active[j]][d];
+          }
+          // Relative to the result: near the apex a set whose result
+          // violates another plane by round-off of the trial stress is not
+          // the answer (the apex is).
+          if (violation(y, sp, k, t) >
+              1e-13 * (std::abs(y[0]) + std::abs(y[1]) + std::abs(y[2]) +
+                       strength.cohesion))
+            continue;
+          for (unsigned int d = 0; d < 3; ++d)
+            sigma[o[d]] = y[d];
+          return true;
+        }
+
+      // No active set satisfies the conditions: the apex of a
+      // non-associated potential, where the stress is the apex itself.
+      const double apex =
+        sp > 0 ? std::min(t, strength.cohesion * strength.cos_phi / sp) :
+                 std::min(t, (x[0] + x[1] + x[2]) / 3);
+      sigma = {{apex, apex, apex}};
+      return true;
+    }
+
+
+
+    template <int dim>
+    void
+    MohrCoulomb<dim>::update(const unsigned int       n,
+                             const Tensor<2, dim>    *dL,
+                             SymmetricTensor<2, dim> *stress,
+                             double                  *state,
+                             double                  *volume_ratio) const
+    {
+      this->update_with(MohrCoulombReturn<dim>{*this},
+                        n,
+                        dL,
+                        stress,
+                        state,
+                        volume_ratio);
+    }
+
+
+
+    template class MohrCoulomb<1>;
+    template class MohrCoulomb<2>;
+  } // namespace Material
+} // namespace psmpm
