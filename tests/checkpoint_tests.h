@@ -142,4 +142,90 @@ copy_directory(const std::string &from, const std::string &to)
   std::filesystem::copy(from, to, std::filesystem::copy_options::recursive);
 }
 
+/// The step of checkpoint file @p f.
+inline unsigned int
+step_of(const std::string &f)
+{
+  const std::string name = std::filesystem::path(f).filename().string();
+  return std::stoul(name.substr(11));
+}
+
+/// Run @p scene uninterrupted and resumed from its second-last checkpoint
+/// (the run as a kill after it leaves it): statistics, .pvd series,
+/// tracked particle, final checkpoint and last particle output must be
+/// the same bit for bit. @p name prefixes the output directories.
+inline void
+check_resume(std::ostream            &out,
+             const std::string       &name,
+             std::vector<std::string> scene)
+{
+  const std::string a = name + "_a", b = name + "_b";
+  std::filesystem::remove_all(a);
+  std::vector<std::string> args = scene;
+  args.insert(args.end(), {"--set", "Output directory=" + a});
+  std::string screen, message;
+  int         code = run_app(args, screen, message);
+  out << name << ": uninterrupted run: exit code " << code << std::endl;
+  const auto files = psmpm::Simulator::Checkpoint::list(a);
+  out << name << ": checkpoints kept:";
+  for (const auto &f : files)
+    out << " " << std::filesystem::path(f).filename().string();
+  out << std::endl;
+  if (files.size() != 2)
+    return;
+  const unsigned int last = step_of(files[0]), resumed = step_of(files[1]);
+
+  // The run as it is left when killed after the checkpoint of step
+  // `resumed` (with later rows, outputs and a half-written checkpoint).
+  copy_directory(a, b);
+  std::filesystem::remove(b + "/" +
+                          psmpm::Simulator::Checkpoint::file_name(last));
+  std::ofstream(b + "/checkpoint.h5.tmp") << "half a checkpoint";
+
+  args = scene;
+  args.insert(args.end(), {"--set", "Output directory=" + b, "--resume"});
+  code = run_app(args, screen, message);
+  out << name << ": resumed run: exit code " << code << std::endl;
+  if (code != 0)
+    out << message << std::endl;
+  const std::string summary = read_file(b + "/summary.json");
+  PSMPM_CHECK(out,
+              summary.find("\"resumed_step\": " + std::to_string(resumed)) !=
+                std::string::npos);
+  PSMPM_CHECK(out, !std::filesystem::exists(b + "/checkpoint.h5.tmp"));
+
+  const auto rows_a = statistics_rows(a + "/statistics.txt");
+  const auto rows_b = statistics_rows(b + "/statistics.txt");
+  out << name << ": statistics rows " << rows_a.size() << " and "
+      << rows_b.size() << std::endl;
+  PSMPM_CHECK(out, rows_a == rows_b);
+  // The .pvd records (but for the time of day deal.II writes into them).
+  for (const std::string pvd : {"/particles.pvd", "/grid.pvd"})
+    PSMPM_CHECK(out,
+                without_date(read_file(a + pvd)) ==
+                  without_date(read_file(b + pvd)));
+  PSMPM_CHECK(out,
+              read_file(a + "/tracked_particle.txt") ==
+                read_file(b + "/tracked_particle.txt"));
+
+  const std::string final_name =
+    "/" + psmpm::Simulator::Checkpoint::file_name(last);
+  const auto ca     = psmpm::Archive::read_hdf5(a + final_name);
+  const auto cb     = psmpm::Archive::read_hdf5(b + final_name);
+  const auto differ = differing_entries(ca, cb);
+  out << name
+      << ": final checkpoint entries compared: " << ca.get_entries().size() - 3
+      << ", differing: " << differ.size() << std::endl;
+  for (const auto &d : differ)
+    out << "  differs: " << d << std::endl;
+  // The last particle output of both runs is the same file (but for the
+  // time of day deal.II writes into it).
+  const std::string vtu =
+    "/particles-" + Utilities::int_to_string(last, 5) + ".000.vtu";
+  PSMPM_CHECK(out,
+              without_date(read_file(a + vtu)) ==
+                without_date(read_file(b + vtu)));
+}
+
+
 #endif

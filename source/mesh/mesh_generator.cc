@@ -186,6 +186,14 @@ namespace psmpm
 
     template <int dim>
     void
+    MeshGenerator<dim>::add_boundary_name(const std::string       &name,
+                                          const types::boundary_id id) const
+    {
+      names[name] = id;
+    }
+
+    template <int dim>
+    void
     MeshGenerator<dim>::make_blocks(Triangulation<2>  &tria,
                                     const Point<2>    &lower,
                                     const Point<2>    &upper,

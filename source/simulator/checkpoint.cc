@@ -446,10 +446,14 @@ namespace psmpm
           for (const auto &in : incoming)
             unpack_with_cells(in.second, mine);
         }
-      // The scene's number of bodies is not particle data.
-      const unsigned int n_bodies = particles.n_bodies;
-      particles                   = std::move(mine);
-      particles.n_bodies          = n_bodies;
+      // The scene's number of bodies and their materials are not
+      // particle data (without the table, the output's material_id read
+      // past its end after a resume).
+      const unsigned int        n_bodies      = particles.n_bodies;
+      std::vector<unsigned int> body_material = particles.body_material;
+      particles                               = std::move(mine);
+      particles.n_bodies                      = n_bodies;
+      particles.body_material                 = std::move(body_material);
     }
 
 

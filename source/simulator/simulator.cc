@@ -127,6 +127,7 @@ namespace psmpm
                         "Constants for the velocity expression, name=value, "
                         "comma separated (pi is predefined).");
       prm.leave_subsection();
+      InitialStress<2>::declare_parameters(prm);
 
       prm.enter_subsection("Body force");
       prm.declare_entry("Gravity",
@@ -146,6 +147,7 @@ namespace psmpm
                         Patterns::Anything(),
                         "Boundaries (names) where the y velocity is zero "
                         "(2D only).");
+      BoundaryConditions<2>::declare_parameters(prm);
       prm.leave_subsection();
 
       prm.enter_subsection("Output");
@@ -283,11 +285,16 @@ namespace psmpm
                              "D (further ones must be 0)."));
       for (unsigned int d = 0; d < dim; ++d)
         state.gravity[d] = g[d];
+      initial_stress.parse_parameters(prm,
+                                      state.materials,
+                                      particle_generator.bodies,
+                                      state.gravity);
 
       prm.enter_subsection("Boundary conditions");
       const char *fixed_entries[] = {"Fixed x", "Fixed y"};
       for (unsigned int d = 0; d < dim; ++d)
         fixed_names[d] = split(prm.get(fixed_entries[d]));
+      boundary_conditions.parse_parameters(prm);
       prm.leave_subsection();
 
       reference = Postprocess::Reference<dim>::create(prm,
@@ -393,6 +400,8 @@ namespace psmpm
     {
       check_distribution();
       create_mesh();
+      boundary_conditions.mark_boundary_parts(*state.triangulation,
+                                              mesh_generator);
       state.locator.reinit(*state.triangulation);
       setup_space_and_grid();
       time_step_control.initialize(state);
@@ -452,6 +461,7 @@ namespace psmpm
                               fixed_entries[d] + ": " + e.what()));
               }
           }
+      boundary_conditions.add_constrained(fixed, mesh_generator);
       // Material that fills a mesh whose boundaries are all closed in
       // their normal direction cannot leave it: `automatic` takes
       // partially lumped mass, the consistent matrix wherever no cell
@@ -538,6 +548,12 @@ namespace psmpm
       // a lighter body's full cells then count as partly filled (more rows
       // lumped, stable), never a heavier body's nearly empty ones as full.
       state.grid->reinit(fixed, state.materials.max_density());
+      boundary_conditions.reinit(state,
+                                 fixed_names,
+                                 mesh_generator,
+                                 transfer->moves_grid());
+      state.boundary_conditions =
+        boundary_conditions.active() ? &boundary_conditions : nullptr;
     }
 
     template <int dim>
@@ -563,6 +579,14 @@ namespace psmpm
         },
         particles);
       state.materials.initialize(particles);
+      // A resumed run replaces these particles by its checkpoint's, whose
+      // stress already started from this.
+      initial_stress.apply(
+        particles,
+        state.materials,
+        state.gravity,
+        InitialStress<dim>::lattice_spacing(mesh_generator, particle_generator),
+        comm);
 
       std::map<std::string, double> constants{{"pi", numbers::PI}};
       for (const auto &c : split(velocity_constants))
@@ -712,8 +736,17 @@ namespace psmpm
           if (tracked)
             tracked->execute(state);
         }
+      // The walls' work enters the energy book: what they did to the
+      // body is no growth of energy.
+      double total_energy = e.total();
+      if (state.boundary_conditions)
+        {
+          boundary_conditions.add_columns(statistics);
+          total_energy =
+            boundary_conditions.monitored_energy(total_energy, state.step);
+        }
       statistics.add_value("wall_time", wall_offset + wall_time);
-      if (monitor.check(e.total(), e.scale(), e.momentum.norm(), comm) &&
+      if (monitor.check(total_energy, e.scale(), e.momentum.norm(), comm) &&
           status == Status::completed)
         {
           status      = Status::unstable;
@@ -766,6 +799,11 @@ namespace psmpm
             for (const char *c :
                  {"displacement_L2", "velocity_L2", "stress_L2"})
               columns.push_back(c);
+          if (state.boundary_conditions)
+            {
+              for (const auto &c : boundary_conditions.statistics_columns())
+                columns.push_back(c);
+            }
           for (const auto &c : columns)
             {
               statistics.set_scientific(c, true);
@@ -1033,6 +1071,8 @@ namespace psmpm
       time_step_control.save(archive);
       monitor.save(archive);
       rotation_statistics.save(archive);
+      if (state.boundary_conditions)
+        boundary_conditions.save(archive);
       if (error_norms)
         error_norms->save(archive);
       if (tracked)
@@ -1171,6 +1211,8 @@ namespace psmpm
           time_step_control.load(shared);
           monitor.load(shared);
           rotation_statistics.load(shared);
+          if (state.boundary_conditions)
+            boundary_conditions.load(shared);
           if (error_norms)
             error_norms->load(shared);
           if (tracked)

@@ -119,6 +119,16 @@ namespace psmpm
           e.second.declare_parameters(prm);
     }
 
+    /// Declare the entries of the variant @p name only (none if it is
+    /// unknown or has none): which entries a variant reads.
+    void
+    declare_parameters(const std::string &name, ParameterHandler &prm) const
+    {
+      const auto it = entries.find(name);
+      if (it != entries.end() && it->second.declare_parameters)
+        it->second.declare_parameters(prm);
+    }
+
     /**
      * Create variant @p name; @p entry ("Subsection/Entry") names the
      * parameter in the error for an unknown name.

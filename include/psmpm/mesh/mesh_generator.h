@@ -89,6 +89,12 @@ namespace psmpm
       types::boundary_id
       boundary_id(const std::string &name) const;
 
+      /// Name boundary id @p id (made after create(), e.g. a part of a
+      /// boundary: Boundary conditions/Boundary parts).
+      void
+      add_boundary_name(const std::string       &name,
+                        const types::boundary_id id) const;
+
       /// A rectangle [lower, upper] of nx by ny blocks split as @p type
       /// (2D only, whatever dim).
       static void

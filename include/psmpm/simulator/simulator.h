@@ -21,7 +21,9 @@
 #include <psmpm/postprocess/step_sums.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/postprocess/tracked_particle.h>
+#include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/checkpoint.h>
+#include <psmpm/simulator/initial_stress.h>
 #include <psmpm/simulator/particle_relocation.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/stability_monitor.h>
@@ -296,7 +298,11 @@ namespace psmpm
       std::string                               closed_transfer_name;
       std::string                               velocity_expression;
       std::string                               velocity_constants;
+      /// Initial conditions/Stress (applied when the particles are made).
+      InitialStress<dim> initial_stress;
       std::array<std::vector<std::string>, dim> fixed_names;
+      /// Reactions, friction, prescribed velocities, boundary parts.
+      BoundaryConditions<dim> boundary_conditions;
       unsigned int                              output_interval = 0;
       unsigned int                              error_interval  = 1;
       unsigned int                              subdivisions    = 0;

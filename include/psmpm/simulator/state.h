@@ -24,6 +24,8 @@ namespace psmpm
 
     template <int dim>
     class Reconstruction;
+    template <int dim>
+    class BoundaryConditions;
 
     /**
      * The discrete state of an MPM run that the components (transfer
@@ -84,6 +86,10 @@ namespace psmpm
       /// How particle data reach the grid integrals; nullptr: the
       /// particles themselves (Transfer/Reconstruction = particles).
       std::unique_ptr<Reconstruction<dim>> reconstruction;
+      /// Reactions, friction and prescribed velocities of the walls,
+      /// applied by the transfer schemes; nullptr when the scene uses
+      /// none of them (the simulator owns the object).
+      BoundaryConditions<dim> *boundary_conditions = nullptr;
       Material::MaterialSet<dim>           materials;
       Particles::ParticleSet<dim>          particles;
       Tensor<1, dim>                       gravity;

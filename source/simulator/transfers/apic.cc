@@ -4,6 +4,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
 namespace psmpm
@@ -132,8 +133,12 @@ namespace psmpm
           forces_to_grid(state, timer);
           if (!this->solve(state, state.grid_acceleration, monitor, timer))
             return false;
+          if (state.boundary_conditions)
+            state.boundary_conditions->after_acceleration(state);
           for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
             state.grid_velocity[l] += state.dt * state.grid_acceleration[l];
+          if (state.boundary_conditions)
+            state.boundary_conditions->impose_velocity(state);
           velocities_to_particles(state, timer);
           {
             PhaseTimer::Scope t(timer, "particle to grid");
@@ -141,6 +146,8 @@ namespace psmpm
           }
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
+          if (state.boundary_conditions)
+            state.boundary_conditions->impose_velocity(state);
           update_particle_state(state, monitor, timer);
           return true;
         }

@@ -4,6 +4,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
@@ -34,9 +35,13 @@ namespace psmpm
           this->particles_to_grid(state, timer, 0., 1.);
           if (!this->solve_acceleration(state, monitor, timer))
             return false;
+          if (state.boundary_conditions)
+            state.boundary_conditions->after_acceleration(state);
           update_particle_velocities(state, timer);
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
+          if (state.boundary_conditions)
+            state.boundary_conditions->impose_velocity(state);
           update_particle_state(state, monitor, timer);
           return true;
         }

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/transfer_scheme.h>
 
@@ -32,11 +33,15 @@ namespace psmpm
           this->particles_to_grid(state, timer, 0., 1.);
           if (!this->solve_acceleration(state, monitor, timer))
             return false;
+          if (state.boundary_conditions)
+            state.boundary_conditions->after_acceleration(state);
           this->momentum_to_grid(state, timer);
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           for (unsigned int i = 0; i < state.grid_velocity.size(); ++i)
             state.grid_velocity[i] += state.dt * state.grid_acceleration[i];
+          if (state.boundary_conditions)
+            state.boundary_conditions->impose_velocity(state);
           update_particles(state, monitor, timer);
           return true;
         }

@@ -1,0 +1,233 @@
+#!/usr/bin/python3
+"""Strip footing: the limit load against Prandtl's, per basis, mesh and soil.
+
+    /usr/bin/python3 contrib/geomechanics/strip_footing_study.py
+        [--exe build/psmpm] [--work DIR] [--meshes 4,8,16]
+        [--bases linear,powell-sabin] [--cases tresca,tresca-nu45,
+        cphi-psi0,cphi-assoc] [--jobs 1] [--reuse] [--no-files]
+
+Runs prm/strip_footing.prm (rigid rough footing, B = 1 m, pushed down at
+0.1 m/s into weightless soil; half model) on the criss-cross meshes of
+contrib/geomechanics/make_strip_footing_mesh.py with --meshes blocks per
+m (2, 4, 8 blocks under the half footing for 4, 8, 16), with each basis:
+linear (lumped mass, MUSL) and powell-sabin (lumped mass, APIC; MUSL
+grows unstable within 30 steps here). Cases:
+
+    tresca       phi = 0, c_u = 10 kPa, E = 500 c_u, nu = 0.3:
+                 q_u / c_u = 2 + pi = 5.142
+    tresca-nu45  the same with nu = 0.45 (closer to undrained)
+    cphi-psi0    phi = 20 deg, psi = 0, c = 10 kPa, E = 2000 c, nu = 0.3:
+                 q_u / c = N_c = 14.835 (associated flow)
+    cphi-assoc   the same with psi = phi = 20 deg
+
+The load q = -2 reaction_footing_y / B (per m); the settlement s = the
+integral of the prescribed velocity. q is averaged over settlement windows
+of 0.01 B (the step-to-step load oscillates by a few %); the limit load
+q_u is the largest window mean (the grid does not follow the footing: the
+load falls once s exceeds about h/2, see doc/geomechanics.md). Prints a
+table and writes doc/data/strip_footing.tsv and doc/images/
+strip_footing.png (q/c against s/B with the reference lines).
+
+Needs python3-numpy and python3-matplotlib (Debian).
+"""
+import argparse
+import concurrent.futures
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import make_strip_footing_mesh  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__))))
+B, V0, RAMP, C = 1.0, 0.1, 0.1, 1e4
+PHI = 20.0
+NQ = math.exp(math.pi * math.tan(math.radians(PHI))) * \
+    math.tan(math.radians(45 + PHI / 2)) ** 2
+NC = (NQ - 1) / math.tan(math.radians(PHI))
+CASES = {
+    'tresca': (2 + math.pi, ['Material/Friction angle=0',
+                             'Material/Dilatancy angle=0',
+                             "Material/Young's modulus=5e6"]),
+    'tresca-nu45': (2 + math.pi, ['Material/Friction angle=0',
+                                  'Material/Dilatancy angle=0',
+                                  "Material/Young's modulus=5e6",
+                                  "Material/Poisson's ratio=0.45"]),
+    'cphi-psi0': (NC, ['Material/Friction angle=%g' % PHI,
+                       'Material/Dilatancy angle=0',
+                       "Material/Young's modulus=2e7"]),
+    'cphi-assoc': (NC, ['Material/Friction angle=%g' % PHI,
+                        'Material/Dilatancy angle=%g' % PHI,
+                        "Material/Young's modulus=2e7"]),
+}
+END_TIME = 0.85   # settlement 0.08 B
+WINDOW = 0.01     # B
+
+
+def statistics(path):
+    """name -> numpy column of statistics.txt."""
+    names, rows = [], []
+    for line in open(path):
+        if line.startswith('# '):
+            names.append(line.split(':', 1)[1].strip())
+        elif line.strip():
+            rows.append([float(v) for v in line.split()])
+    a = np.array(rows)
+    return {n: a[:, i] for i, n in enumerate(names)}
+
+
+def settlement(t):
+    """Integral of v0 min(t / ramp, 1)."""
+    return np.where(t < RAMP, V0 * t * t / (2 * RAMP), V0 * (t - RAMP / 2))
+
+
+def run(exe, work, basis, blocks, case, reuse):
+    tag = '%s-%d-%s' % (basis, blocks, case)
+    d = os.path.join(work, tag)
+    mesh = os.path.join(work, 'strip_footing_%d.msh' % blocks)
+    if not (reuse and os.path.exists(os.path.join(d, 'summary.json'))):
+        sets = ['Output directory=' + d, 'Mesh/File=' + mesh,
+                'Basis/Type=' + basis, 'Time/End time=%g' % END_TIME,
+                'Transfer/Scheme=' + ('apic' if basis == 'powell-sabin'
+                                      else 'musl')] + CASES[case][1]
+        args = [exe, os.path.join(ROOT, 'prm', 'strip_footing.prm')]
+        for s in sets:
+            args += ['--set', s]
+        p = subprocess.run(args, capture_output=True, text=True)
+        if p.returncode != 0:
+            sys.stderr.write('%s: exit code %d\n%s\n' % (
+                tag, p.returncode, (p.stdout + p.stderr)[-600:]))
+    return evaluate(d, basis, blocks, case)
+
+
+def evaluate(d, basis, blocks, case):
+    path = os.path.join(d, 'summary.json')
+    if not os.path.exists(path):
+        # No summary: the run stopped with an error (printed above).
+        path = os.path.join(d, 'log.txt')
+        summary = {'status': 'failed', 'n_particles': 0,
+                   'cpu_time_s': np.nan, 'wall_time_s': np.nan, 'steps': 0}
+    else:
+        summary = json.load(open(path))
+    s = statistics(os.path.join(d, 'statistics.txt'))
+    t = s['time']
+    q = -2 * s['reaction_footing_y'] / B / C
+    sb = settlement(t) / B
+    # Window means of q over settlement windows of WINDOW B, sliding by
+    # WINDOW / 4.
+    best, at = -np.inf, 0.0
+    lo = 0.0
+    while lo + WINDOW <= sb[-1] + 1e-12:
+        m = (sb >= lo) & (sb < lo + WINDOW)
+        if m.any() and q[m].mean() > best:
+            best, at = q[m].mean(), lo + WINDOW / 2
+        lo += WINDOW / 4
+    ref = CASES[case][0]
+    floor = s['reaction_bottom_y']
+    late = sb > 0.02
+    return {
+        'basis': basis, 'blocks': blocks, 'case': case,
+        'status': summary['status'], 'h': 1.0 / blocks,
+        'under': blocks // 2, 'particles': summary['n_particles'],
+        'qu': best, 'ref': ref, 'error': best / ref - 1, 'at': at,
+        # Global equilibrium: footing load against the floor's reaction.
+        'balance': np.mean(floor[late]) / -np.mean(s['reaction_footing_y'][
+            late]) - 1 if late.any() else np.nan,
+        'ke_over_w': s['kinetic_energy'].max() / s['prescribed_work'][-1],
+        'cpu_s': summary['cpu_time_s'], 'wall_s': summary['wall_time_s'],
+        'steps': summary['steps'], 's': sb, 'q': q,
+    }
+
+
+COLUMNS = [('status', '%s'), ('h', '%.4g'), ('under', '%d'),
+           ('particles', '%d'), ('ref', '%.3f'), ('qu', '%.3f'),
+           ('error', '%+.3f'), ('at', '%.3f'), ('balance', '%+.3f'),
+           ('ke_over_w', '%.3g'), ('steps', '%d'), ('cpu_s', '%.1f'),
+           ('wall_s', '%.1f')]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--exe', default=os.path.join(ROOT, 'build', 'psmpm'))
+    ap.add_argument('--work', default='strip-footing-study')
+    ap.add_argument('--meshes', default='4,8,16')
+    ap.add_argument('--bases', default='linear,powell-sabin')
+    ap.add_argument('--cases', default=','.join(CASES))
+    ap.add_argument('--jobs', type=int, default=1)
+    ap.add_argument('--reuse', action='store_true',
+                    help='evaluate the runs already in --work instead of '
+                    'running them again')
+    ap.add_argument('--no-files', action='store_true',
+                    help='print only; do not write doc/data, doc/images')
+    args = ap.parse_args()
+    work = os.path.abspath(args.work)
+    os.makedirs(work, exist_ok=True)
+    meshes = [int(m) for m in args.meshes.split(',')]
+    for m in meshes:
+        make_strip_footing_mesh.write_mesh(
+            os.path.join(work, 'strip_footing_%d.msh' % m), m)
+    jobs = [(b, m, c) for c in args.cases.split(',')
+            for b in args.bases.split(',') for m in meshes]
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        futures = [pool.submit(run, args.exe, work, b, m, c, args.reuse)
+                   for b, m, c in jobs]
+        results = [f.result() for f in futures]
+
+    header = ['case', 'basis', 'blocks_per_m'] + [c for c, _ in COLUMNS]
+    lines = ['\t'.join(header)]
+    for r in results:
+        lines.append('\t'.join([r['case'], r['basis'], '%d' % r['blocks']] +
+                               [f % r[c] for c, f in COLUMNS]))
+    print('# q_u/c: largest mean of q/c over %g B of settlement; error = '
+          'q_u / reference - 1; at: its settlement / B; balance: floor '
+          'reaction / footing load - 1 (s > 0.02 B); ke_over_w: largest '
+          'kinetic energy / the footing\'s work' % WINDOW)
+    print('\n'.join(lines))
+    if args.no_files:
+        return
+    os.makedirs(os.path.join(ROOT, 'doc', 'data'), exist_ok=True)
+    with open(os.path.join(ROOT, 'doc', 'data', 'strip_footing.tsv'),
+              'w') as f:
+        f.write('# contrib/geomechanics/strip_footing_study.py: '
+                'prm/strip_footing.prm, settlement to %g B\n'
+                % settlement(np.array([END_TIME]))[0])
+        f.write('\n'.join(lines) + '\n')
+
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    cases = list(dict.fromkeys(r['case'] for r in results))
+    fig, axes = plt.subplots(1, len(cases), figsize=(4.6 * len(cases), 4),
+                             squeeze=False)
+    styles = {'linear': '-', 'powell-sabin': '--'}
+    for ax, case in zip(axes[0], cases):
+        for r in results:
+            if r['case'] != case:
+                continue
+            # Smoothed over 0.005 B for legibility.
+            k = max(1, int(len(r['s']) * 0.005 / max(r['s'][-1], 1e-9)))
+            qs = np.convolve(r['q'], np.ones(k) / k, mode='valid')
+            ax.plot(r['s'][k // 2:k // 2 + len(qs)], qs, styles.get(r['basis'], '-'),
+                    label='%s, h = B/%d' % (r['basis'], r['blocks']))
+        ref = CASES[case][0]
+        ax.axhline(ref, color='k', lw=0.8)
+        ax.axhspan(ref * 0.95, ref * 1.05, color='k', alpha=0.08)
+        ax.set_xlabel('settlement / B')
+        ax.set_title('%s (reference %.2f)' % (case, ref))
+        ax.set_ylim(0, ref * 1.3)
+        ax.grid(True, alpha=0.3)
+    axes[0][0].set_ylabel('q / c')
+    axes[0][0].legend(loc='lower right', fontsize='small')
+    fig.tight_layout()
+    os.makedirs(os.path.join(ROOT, 'doc', 'images'), exist_ok=True)
+    fig.savefig(os.path.join(ROOT, 'doc', 'images', 'strip_footing.png'),
+                dpi=110)
+
+
+if __name__ == '__main__':
+    main()
