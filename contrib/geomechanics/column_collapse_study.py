@@ -94,7 +94,8 @@ def run(a, basis):
     h = h0 / args.cells
     ro = law_runout(a)
     length = d0 * (1 + 1.5 * (ro if ro is not None else 2.0)) + 0.05
-    height = 1.1 * h0
+    # Room above: a few particles splash up at the impact of the front.
+    height = 1.5 * h0
     nx, ny = math.ceil(length / h), math.ceil(height / h)
     end = 12 * math.sqrt(h0 / g)
     out = os.path.join(work, f"a{a}_{basis}")
