@@ -162,7 +162,9 @@ axes[0].plot(ax, [1 / law_height(a) for a in ax], "k-", label="Nguyen et al. law
 axes[1].plot([a for a in ax if a > 0.65], [law_runout(a) for a in ax if a > 0.65], "k-",
              label="Nguyen et al. law")
 for basis, marker in (("linear", "o"), ("powell-sabin", "s")):
-    sel = [r for r in rows if r["basis"] == basis]
+    # Runs that stopped early (a particle thrown out of the mesh) are in
+    # the table, not in the plot.
+    sel = [r for r in rows if r["basis"] == basis and r["status"] == "completed"]
     axes[0].plot([r["a"] for r in sel], [1 / r["h_ratio"] for r in sel], marker, label=basis)
     axes[1].plot([r["a"] for r in sel], [r["runout"] for r in sel], marker, label=basis)
 axes[0].set_xlabel("a = h0/d0")

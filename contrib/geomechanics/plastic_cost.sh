@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The cost of the soil models against the elastic one on the throughput bar
+# (prm/benchmark_throughput.prm: 320,000 particles, P1, lumped mass, MUSL):
+# each pair of runs side by side, one per core (taskset), so that both see
+# the same machine; rate (particle-steps per second), the loop's CPU
+# seconds and the update phase's seconds from summary.json.
+#   bash contrib/geomechanics/plastic_cost.sh [build/psmpm] [rounds]
+# Cases: hypoelastic; mohr-coulomb and drucker-prager far from yield
+# (Cohesion 1e9: the elastic path with the yield test); mohr-coulomb and
+# drucker-prager yielding in every particle and step (Tresca / von Mises,
+# Cohesion 1e-6 Pa, below the bar's stresses from the first steps).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+binary=${1:-$root/build/psmpm}
+rounds=${2:-3}
+work=$(mktemp -d)
+run() { # core name args...
+  local core=$1 name=$2
+  shift 2
+  taskset -c "$core" "$binary" "$root/prm/benchmark_throughput.prm" \
+    --set "Output directory=$work/$name" --set "Time/End time=1e-3" "$@" \
+    > /dev/null 2>&1
+}
+report() {
+  /usr/bin/python3 - "$work/$1/summary.json" "$1" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+d = s["dissipated_energy"] if "dissipated_energy" in s else None
+print(f"{sys.argv[2]:24s} rate {s['particle_steps_per_second']:.3e}  "
+      f"loop CPU {s['cpu_time_loop_s']:.2f} s  update {s['timers_s']['update']:.2f} s  "
+      f"status {s['status']}")
+PY
+}
+elastic=(--set "Material/Model=hypoelastic")
+for round in $(seq "$rounds"); do
+  for case in "mohr-coulomb elastic:Material/Model=mohr-coulomb:Material/Cohesion=1e9" \
+              "drucker-prager elastic:Material/Model=drucker-prager:Material/Cohesion=1e9" \
+              "mohr-coulomb yielding:Material/Model=mohr-coulomb:Material/Cohesion=1e-6" \
+              "drucker-prager yielding:Material/Model=drucker-prager:Material/Cohesion=1e-6"; do
+    IFS=: read -r name model cohesion <<< "$case"
+    tag=${name// /_}
+    args=(--set "$model" --set "$cohesion" --set "Material/Friction angle=0")
+    # Swap the cores every round.
+    if [ $((round % 2)) -eq 1 ]; then
+      run 0 "hypo_$tag" "${elastic[@]}" & run 1 "$tag" "${args[@]}" & wait
+    else
+      run 1 "hypo_$tag" "${elastic[@]}" & run 0 "$tag" "${args[@]}" & wait
+    fi
+    echo "round $round:"
+    report "hypo_$tag"
+    report "$tag"
+  done
+done
+rm -rf "$work"
