@@ -87,14 +87,14 @@ namespace psmpm
 
       /// The largest violation of the Mohr-Coulomb planes and the cutoff
       /// by the principal stresses @p s (any order).
-      double
+      inline double
       violation(const std::array<double, 3> &s,
                 const double                 sin_phi,
                 const double                 k,
                 const double                 t)
       {
-        const double s1 = std::max({s[0], s[1], s[2]});
-        const double s3 = std::min({s[0], s[1], s[2]});
+        const double s1 = std::max(std::max(s[0], s[1]), s[2]);
+        const double s3 = std::min(std::min(s[0], s[1]), s[2]);
         return std::max((1 + sin_phi) * s1 - (1 - sin_phi) * s3 - k, s1 - t);
       }
 
@@ -144,8 +144,7 @@ namespace psmpm
           for (const bool main : {true, false})
             for (unsigned int size = 1; size <= 3; ++size)
               for (unsigned int m = 2; m < (1u << n_planes); ++m)
-                if (__builtin_popcount(m) == int(size) &&
-                    bool(m & 1u) == main)
+                if (__builtin_popcount(m) == int(size) && bool(m & 1u) == main)
                   masks[n_masks++] = m;
         }
         unsigned int masks[64];
@@ -197,6 +196,61 @@ namespace psmpm
             const double d2 = (a0 * y[0] + a2 * y[2] - k) * inv_denominator;
             for (unsigned int d = 0; d < 3; ++d)
               y[d] -= d2 * Db[d];
+            if (violation(y, sp, k, t) <=
+                1e-13 * (std::abs(y[0]) + std::abs(y[1]) + std::abs(y[2]) +
+                         strength.cohesion))
+              {
+                for (unsigned int d = 0; d < 3; ++d)
+                  sigma[o[d]] = y[d];
+                return true;
+              }
+          }
+      }
+
+      // The two edges in closed form (Cramer's rule): the main plane with
+      // that of the neighbouring sextant where sigma_1 = sigma_2 (e = 1)
+      // or sigma_2 = sigma_3 (e = 2), what most particles that are not on
+      // the main plane return to (a body in uniaxial or triaxial states).
+      {
+        const double b0 = 1 + ss, b2 = -(1 - ss), a0 = 1 + sp, a2 = -(1 - sp);
+        const double l                 = lambda * (b0 + b2);
+        const std::array<double, 3> Dm = {{l + two_g * b0, l, l + two_g * b2}};
+        const std::array<double, 3> am = {{a0, 0, a2}};
+        for (const unsigned int e : {1u, 2u})
+          {
+            const std::array<double, 3> ae =
+              e == 1 ? std::array<double, 3>{{0, a0, a2}} :
+                       std::array<double, 3>{{a0, a2, 0}};
+            const std::array<double, 3> De =
+              e == 1 ?
+                std::array<double, 3>{{l, l + two_g * b0, l + two_g * b2}} :
+                std::array<double, 3>{{l + two_g * b0, l + two_g * b2, l}};
+            const auto dot = [](const std::array<double, 3> &u,
+                                const std::array<double, 3> &v) {
+              return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+            };
+            const double A00 = dot(am, Dm), A01 = dot(am, De),
+                         A10 = dot(ae, Dm), A11 = dot(ae, De);
+            const double det = A00 * A11 - A01 * A10;
+            if (!(std::abs(det) > 1e-10 * std::abs(A00 * A11)))
+              continue;
+            const double inv = 1 / det;
+            const auto   solve =
+              [&](const std::array<double, 3> &z, double &d0, double &d1) {
+                const double r0 = dot(am, z) - k, r1 = dot(ae, z) - k;
+                d0 = (r0 * A11 - A01 * r1) * inv;
+                d1 = (A00 * r1 - A10 * r0) * inv;
+              };
+            double d0, d1;
+            solve(x, d0, d1);
+            if (!(d0 >= 0 && d1 >= 0))
+              continue;
+            std::array<double, 3> y;
+            for (unsigned int d = 0; d < 3; ++d)
+              y[d] = x[d] - d0 * Dm[d] - d1 * De[d];
+            solve(y, d0, d1); // refined once, as below
+            for (unsigned int d = 0; d < 3; ++d)
+              y[d] -= d0 * Dm[d] + d1 * De[d];
             if (violation(y, sp, k, t) <=
                 1e-13 * (std::abs(y[0]) + std::abs(y[1]) + std::abs(y[2]) +
                          strength.cohesion))
