@@ -57,6 +57,21 @@ namespace psmpm
                  0.5 * (d0 * d0 + d1 * d1 + d2 * d2) <= bound * bound;
         }
 
+        /// The same from the centre c and squared radius r^2 of the
+        /// in-plane Mohr circle and sigma_zz = z: J2 = (c - p)^2 + r^2 +
+        /// (z - p)^2 / 2.
+        bool
+        inside_plane(const typename PlasticHypoelastic<dim>::Strength &s,
+                     const double                                      c,
+                     const double                                      r2,
+                     const double                                      z) const
+        {
+          const double p     = (2 * c + z) * (1. / 3);
+          const double bound = s.derived[1] - s.derived[0] * p;
+          const double j2    = (c - p) * (c - p) + r2 + 0.5 * (z - p) * (z - p);
+          return bound >= 0 && j2 <= bound * bound;
+        }
+
         bool
         operator()(const typename PlasticHypoelastic<dim>::Strength &s,
                    std::array<double, 3> &sigma) const

@@ -121,6 +121,31 @@ namespace psmpm
                  s1 <= s.tension_cutoff;
         }
 
+        /// The elastic test of a plane-strain stress from the centre c
+        /// and squared radius r^2 of its in-plane Mohr circle and sigma_zz
+        /// = z, without the square root: by where z lies against c -+ r,
+        /// f <= 0 is alpha r <= beta with alpha >= 0.
+        bool
+        inside_plane(const typename PlasticHypoelastic<dim>::Strength &s,
+                     const double                                      c,
+                     const double                                      r2,
+                     const double                                      z) const
+        {
+          const double sp = s.sin_phi, k = s.derived[0], t = s.tension_cutoff;
+          const auto   at_most = [r2](const double alpha, const double beta) {
+            return beta >= 0 && alpha * alpha * r2 <= beta * beta;
+          };
+          const double dz = z - c;
+          bool         inside;
+          if (dz >= 0 && dz * dz >= r2) // z = sigma_1
+            inside = at_most(1 - sp, k + (1 - sp) * c - (1 + sp) * z);
+          else if (dz <= 0 && dz * dz >= r2) // z = sigma_3
+            inside = at_most(1 + sp, k + (1 - sp) * z - (1 + sp) * c);
+          else
+            inside = at_most(2, k - 2 * sp * c);
+          return inside && z <= t && at_most(1, t - c);
+        }
+
         bool
         operator()(const typename PlasticHypoelastic<dim>::Strength &s,
                    std::array<double, 3> &sigma) const
