@@ -28,8 +28,12 @@ namespace psmpm
      * in order of size, whose multipliers are non-negative and whose
      * result violates no plane; where none is (the apex of a
      * non-associated potential) the stress goes to the apex
-     * min(t, c cot phi) (1, 1, 1). After the update f <= 1e-12 (|sigma| +
-     * c) (tests/material/mohr_coulomb_01).
+     * min(t, c cot phi) (1, 1, 1). An active set is accepted when its
+     * result violates no plane by more than 1e-13 (|sigma| + c), after one
+     * step of iterative refinement; tests/material/mohr_coulomb_01
+     * asserts f <= 1e-10 (|sigma| + c) after every update. The main
+     * plane and the two edges, where most returns end, are solved in
+     * closed form first.
      */
     template <int dim>
     class MohrCoulomb : public PlasticHypoelastic<dim>
