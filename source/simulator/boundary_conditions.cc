@@ -624,7 +624,6 @@ namespace psmpm
       const auto &mass       = grid.lumped_mass();
       const bool  have_speed = state.grid_velocity.size() == a.size();
       double      work       = 0;
-      stuck.assign(walls.size(), false);
       for (unsigned int w = 0; w < walls.size(); ++w)
         {
           const WallDof &wall = walls[w];
@@ -639,7 +638,6 @@ namespace psmpm
           const double bound = wall.mu * std::abs(rn) * dt / m;
           const double next =
             trial - std::copysign(std::min(std::abs(trial), bound), trial);
-          stuck[w]             = next == 0;
           const double changed = (next - v) / dt;
           const double force   = m * (changed - at);
           at                   = changed;
@@ -684,14 +682,6 @@ namespace psmpm
       for (const auto &p : prescribed_dofs)
         state.grid_velocity[p.dof][p.component] =
           prescribed[p.boundary].new_value[p.component];
-      // A wall DoF that sticks keeps its tangential velocity at zero in
-      // the velocity the particles move with (MUSL's second projection
-      // would otherwise let it slide, and the next step's friction then
-      // pulled it back with an impulse that fed energy into a slope
-      // resting on a frictional floor).
-      for (unsigned int w = 0; w < stuck.size(); ++w)
-        if (stuck[w])
-          state.grid_velocity[walls[w].dof][walls[w].tangential] = 0;
     }
 
     template <int dim>

@@ -236,10 +236,6 @@ namespace psmpm
         unsigned int dof, component, boundary;
       };
 
-      /// Per wall DoF: whether friction stopped its tangential velocity in
-      /// this step's acceleration (stick), so that the grid velocity the
-      /// particles move with is held there too, as on a no-slip wall.
-      std::vector<bool>       stuck;
       bool                    report_reactions = false;
       std::vector<Friction>   friction;
       std::vector<Prescribed> prescribed;
