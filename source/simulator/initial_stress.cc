@@ -20,23 +20,25 @@ namespace psmpm
 {
   namespace Simulator
   {
+    std::map<std::string, double>
+    parse_function_constants(const std::string &text)
+    {
+      std::map<std::string, double> constants{{"pi", numbers::PI}};
+      for (const auto &c : Utilities::split_string_list(text, ','))
+        {
+          const auto kv = Utilities::split_string_list(c, '=');
+          AssertThrow(kv.size() == 2,
+                      ExcMessage("Initial conditions/Function constants: '" +
+                                 c + "' is not name=value."));
+          constants[kv[0]] = Utilities::string_to_double(kv[1]);
+        }
+      return constants;
+    }
+
+
+
     namespace
     {
-      /// The constants of Initial conditions/Function constants, with pi.
-      std::map<std::string, double>
-      parse_constants(const std::string &text)
-      {
-        std::map<std::string, double> constants{{"pi", numbers::PI}};
-        for (const auto &c : Utilities::split_string_list(text, ','))
-          {
-            const auto kv = Utilities::split_string_list(c, '=');
-            AssertThrow(kv.size() == 2,
-                        ExcMessage("Initial conditions/Function constants: '" +
-                                   c + "' is not name=value."));
-            constants[kv[0]] = Utilities::string_to_double(kv[1]);
-          }
-        return constants;
-      }
 
       /// Number of expressions of Stress function: sxx, syy, sxy, szz in
       /// 2D; sxx and the lateral stress in 1D.
@@ -149,8 +151,8 @@ namespace psmpm
 
       if (type == Type::function)
         {
-          const auto         constants = parse_constants(function_constants);
-          const unsigned int n         = n_stress_components<dim>;
+          const auto constants = parse_function_constants(function_constants);
+          const unsigned int n = n_stress_components<dim>;
           try
             {
               FunctionParser<dim> f(n);
@@ -432,7 +434,7 @@ namespace psmpm
       FunctionParser<dim> f(nc);
       f.initialize(dim == 1 ? "x" : "x,y",
                    function_expression,
-                   parse_constants(function_constants));
+                   parse_function_constants(function_constants));
       Vector<double> v(nc);
       std::string    where;
       for (std::size_t p = 0; p < particles.size() && where.empty(); ++p)

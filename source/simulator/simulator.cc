@@ -588,15 +588,7 @@ namespace psmpm
         InitialStress<dim>::lattice_spacing(mesh_generator, particle_generator),
         comm);
 
-      std::map<std::string, double> constants{{"pi", numbers::PI}};
-      for (const auto &c : split(velocity_constants))
-        {
-          const auto kv = Utilities::split_string_list(c, '=');
-          AssertThrow(kv.size() == 2,
-                      ExcMessage("Initial conditions/Function constants: '" +
-                                 c + "' is not name=value."));
-          constants[kv[0]] = Utilities::string_to_double(kv[1]);
-        }
+      const auto constants = parse_function_constants(velocity_constants);
       // The affine transfers start from the initial velocity gradient
       // (C_p = grad v): fourth-order differences with h = 1e-4 are exact
       // to round-off for the affine fields they must carry. The others

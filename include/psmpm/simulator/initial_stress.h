@@ -13,6 +13,7 @@
 #include <psmpm/particles/particle_generator.h>
 #include <psmpm/particles/particle_set.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,12 @@ namespace psmpm
   namespace Simulator
   {
     using namespace dealii;
+
+    /// The constants of Initial conditions/Function constants
+    /// (name=value, comma separated) with pi: for the initial velocity
+    /// and the stress function alike.
+    std::map<std::string, double>
+    parse_function_constants(const std::string &text);
 
     /**
      * The stress the particles start with (entries Stress, K0 and Stress
