@@ -8,6 +8,7 @@
 
 #include "tests.h"
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,6 +39,30 @@ run_app(const std::vector<std::string> &args,
   screen = out.str();
   errors = err.str();
   return code;
+}
+
+/// Run the scene @p prm (written to case.prm, whose Output directory is
+/// bad_output) and check that it is refused as bad input: exit code 2, a
+/// message naming case.prm and each of @p must_mention, nothing written.
+inline void
+check_bad_input(std::ostream                   &out,
+                const std::string              &name,
+                const std::string              &prm,
+                const std::vector<std::string> &must_mention)
+{
+  std::filesystem::remove_all("bad_output");
+  std::ofstream("case.prm") << prm;
+  std::string screen, message;
+  const int   code     = run_app({"case.prm"}, screen, message);
+  bool        mentions = message.find("case.prm") != std::string::npos;
+  for (const auto &m : must_mention)
+    mentions = mentions && message.find(m) != std::string::npos;
+  out << name << ": exit code " << code << std::endl;
+  PSMPM_CHECK(out, code == psmpm::App::bad_input);
+  PSMPM_CHECK(out, mentions);
+  PSMPM_CHECK(out, !std::filesystem::exists("bad_output"));
+  if (!mentions || code != psmpm::App::bad_input)
+    out << "  message: " << message;
 }
 
 #endif

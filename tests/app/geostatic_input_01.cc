@@ -56,19 +56,5 @@ main(int argc, char **argv)
      {"Initial conditions/Stress = geostatic", "Body force/Gravity"}},
   };
   for (const auto &c : cases)
-    {
-      std::filesystem::remove_all("bad_output");
-      std::ofstream("case.prm") << c.prm;
-      std::string screen, message;
-      const int   code     = run_app({"case.prm"}, screen, message);
-      bool        mentions = message.find("case.prm") != std::string::npos;
-      for (const auto &m : c.must_mention)
-        mentions = mentions && message.find(m) != std::string::npos;
-      out << c.name << ": exit code " << code << std::endl;
-      PSMPM_CHECK(out, code == psmpm::App::bad_input);
-      PSMPM_CHECK(out, mentions);
-      PSMPM_CHECK(out, !std::filesystem::exists("bad_output"));
-      if (!mentions || code != psmpm::App::bad_input)
-        out << "  message: " << message;
-    }
+    check_bad_input(out, c.name, c.prm, c.must_mention);
 }
