@@ -2,8 +2,8 @@
 # The cost of the soil models against the elastic one on the throughput bar
 # (prm/benchmark_throughput.prm: 320,000 particles, P1, lumped mass, MUSL):
 # each pair of runs side by side, one per core (taskset), so that both see
-# the same machine; rate (particle-steps per second), the loop's CPU
-# seconds and the update phase's seconds from summary.json.
+# the same machine; rate (particle-steps per second), the loop's CPU and
+# wall seconds and the update phase's seconds from summary.json.
 #   bash contrib/geomechanics/plastic_cost.sh [build/psmpm] [rounds]
 # Cases: hypoelastic; mohr-coulomb and drucker-prager far from yield
 # (Cohesion 1e9: the elastic path with the yield test); mohr-coulomb and
@@ -25,10 +25,9 @@ report() {
   /usr/bin/python3 - "$work/$1/summary.json" "$1" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
-d = s["dissipated_energy"] if "dissipated_energy" in s else None
 print(f"{sys.argv[2]:24s} rate {s['particle_steps_per_second']:.3e}  "
-      f"loop CPU {s['cpu_time_loop_s']:.2f} s  update {s['timers_s']['update']:.2f} s  "
-      f"status {s['status']}")
+      f"loop CPU {s['cpu_time_loop_s']:.2f} s  loop wall {s['time_loop_s']:.2f} s  "
+      f"update {s['timers_s']['update']:.2f} s  status {s['status']}")
 PY
 }
 elastic=(--set "Material/Model=hypoelastic")
