@@ -1,6 +1,6 @@
 // ---------------------------------------------------------------------
 // psmpm: runs the "l2 projection" scene once without the application, so
-// that the convergence study (contrib/l2_projection_study.sh) can be
+// that the convergence study (contrib/studies/thesis/l2_projection_study.sh) can be
 // reproduced from the library alone.
 //
 //   l2_projection_driver <linear|powell-sabin> <diagonal|criss-cross>

@@ -4,7 +4,7 @@
 #   contrib/psmpm.sh test [ctest options]              the whole test suite
 #   contrib/psmpm.sh build                             only install and build
 #   contrib/psmpm.sh tools                             also ParaView (pvbatch) and
-#                                                      xvfb for contrib/render_*.py
+#                                                      xvfb for contrib/render/*.py
 # Installs missing Debian packages first (needs root or sudo). The build
 # directory is $PSMPM_BUILD_DIR (default: build/ in the source tree).
 set -euo pipefail

@@ -42,6 +42,9 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_strip_footing_mesh  # noqa: E402
+sys.path.insert(1, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "lib"))
+from psmpm_output import read_statistics as statistics  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))
@@ -67,18 +70,6 @@ CASES = {
 }
 END_TIME = 0.85   # settlement 0.08 B
 WINDOW = 0.01     # B
-
-
-def statistics(path):
-    """name -> numpy column of statistics.txt."""
-    names, rows = [], []
-    for line in open(path):
-        if line.startswith('# '):
-            names.append(line.split(':', 1)[1].strip())
-        elif line.strip():
-            rows.append([float(v) for v in line.split()])
-    a = np.array(rows)
-    return {n: a[:, i] for i, n in enumerate(names)}
 
 
 def settlement(t):

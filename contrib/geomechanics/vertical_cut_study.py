@@ -33,63 +33,22 @@ switched on at t = 0).
 Needs python3-numpy and python3-matplotlib (Debian).
 """
 import argparse
-import base64
 import concurrent.futures
 import json
 import os
 import re
-import struct
 import subprocess
 import sys
-import zlib
 
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "lib"))
+from psmpm_output import ROOT, vtu_arrays  # noqa: E402
+from psmpm_output import read_statistics as statistics  # noqa: E402
 RHO, G, H, NC, E_OVER_C = 2000.0, 9.81, 1.0, 3.78, 750.0
 GAMMA_H3 = RHO * G * H ** 3
 FACE_TOP = (2.0, 1.0)
-
-
-def vtu_arrays(path):
-    """name -> numpy array of a deal.II zlib-compressed binary VTU."""
-    text = open(path).read()
-    out = {}
-    for m in re.finditer(r'<DataArray([^>]*)>\s*([^<]*)</DataArray>', text):
-        attrs, data = m.group(1), m.group(2).strip()
-        name = re.search(r'Name="([^"]*)"', attrs)
-        name = name.group(1) if name else "Points"
-        typ = re.search(r'type="([^"]*)"', attrs).group(1)
-        ncomp = re.search(r'NumberOfComponents="(\d+)"', attrs)
-        ncomp = int(ncomp.group(1)) if ncomp else 1
-        nb = struct.unpack('<I', base64.b64decode(data[:8] + '====')[:4])[0]
-        hbytes = (3 + nb) * 4
-        hlen = (hbytes + 2) // 3 * 4
-        header = struct.unpack('<%dI' % (3 + nb),
-                               base64.b64decode(data[:hlen])[:hbytes])
-        raw = base64.b64decode(data[hlen:])
-        buf, pos = b'', 0
-        for size in header[3:]:
-            buf += zlib.decompress(raw[pos:pos + size])
-            pos += size
-        fmt = {'Float32': '<f4', 'Float64': '<f8', 'Int32': '<i4',
-               'UInt8': 'u1'}[typ]
-        v = np.frombuffer(buf, dtype=fmt).astype(float)
-        out[name] = v.reshape(-1, ncomp) if ncomp > 1 else v
-    return out
-
-
-def statistics(path):
-    """name -> numpy column of statistics.txt."""
-    names, rows = [], []
-    for line in open(path):
-        if line.startswith('# '):
-            names.append(line.split(':', 1)[1].strip())
-        elif line.strip():
-            rows.append([float(v) for v in line.split()])
-    a = np.array(rows)
-    return {n: a[:, i] for i, n in enumerate(names)}
 
 
 def overrides(ratio, basis, end_time, extra=()):

@@ -46,12 +46,16 @@ namespace
     {
       const double lambda = lame_lambda();
       const double two_g  = 2 * shear_modulus();
+      // A particle's state block starts at state + i * state_stride(), not
+      // at state + 3 * i: in a scene whose bodies use several models, each
+      // model owns its own columns of a wider shared array (MaterialSet).
+      const unsigned int stride = state_stride();
       for (unsigned int i = 0; i < n; ++i)
         {
           const SymmetricTensor<2, 2> de = symmetrize(dL[i]);
           const double                tr = trace(de);
           stress[i] += lambda * tr * unit_symmetric_tensor<2>() + two_g * de;
-          double *eps = state + 3 * i;
+          double *eps = state + stride * i;
           eps[0] += de[0][0];
           eps[1] += de[1][1];
           eps[2] += de[0][1];
@@ -69,9 +73,10 @@ namespace
                    const double *state,
                    double       *energy) const override
     {
+      const unsigned int stride = state_stride();
       for (unsigned int i = 0; i < n; ++i)
         {
-          const double *eps = state + 3 * i;
+          const double *eps = state + stride * i;
           const double  tr  = eps[0] + eps[1];
           const double  eps_eps =
             eps[0] * eps[0] + eps[1] * eps[1] + 2 * eps[2] * eps[2];

@@ -490,7 +490,7 @@ namespace psmpm
     double
     BSpline::stability_factor(const bool lumped) const
     {
-      // Measured (contrib/chapter_bar_study.py --stability [--degree p],
+      // Measured (contrib/studies/chapter/chapter_bar_study.py --stability [--degree p],
       // doc/chapter.md): bisection of the fixed step on the chapter's
       // bar, 10 elements, 2000 steps, stable = no monitor trips, fixed and
       // free ends; the smaller value, rounded down.

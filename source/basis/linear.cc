@@ -247,7 +247,7 @@ namespace psmpm
         return lumped ? 1.0 : 0.57;
       else
         // Measured by bisection on the vibrating bar with criss-cross
-        // blocks (contrib/stability_study.py: 1.58 lumped, 0.64
+        // blocks (contrib/studies/stability/stability_study.py: 1.58 lumped, 0.64
         // consistent), rounded down; doc/stability.md. With a mass matrix
         // and cells that empty, the limit is lower: the cantilever of
         // prm/cantilever.prm on 2 blocks through the depth (partially

@@ -662,7 +662,7 @@ namespace psmpm
       // cell data of point i + 2 a is requested, the sub-triangle of point
       // i + a found and its coefficients requested, point i evaluated.
       // On the throughput bar this halved the time per point
-      // (doc/performance.md, stop 28).
+      // (doc/performance.md, "Powell-Sabin evaluation").
       constexpr unsigned int a = 8;
       // One rank holds every cell at its own index: the loop reads
       // cell_data[cell] as before the held cells existed. Several ranks
@@ -925,7 +925,7 @@ namespace psmpm
     PowellSabin::stability_factor(const bool lumped) const
     {
       // Measured by bisection on the vibrating bar with criss-cross blocks
-      // (contrib/stability_study.py: 1.61 lumped, 0.43 consistent),
+      // (contrib/studies/stability/stability_study.py: 1.61 lumped, 0.43 consistent),
       // rounded down; doc/stability.md. Lumped: a free body turning
       // through empty cells with APIC (prm/rotating_block.prm, nu = 0.49
       // and 0.499) is stable at 0.675 h / c and not at 0.75, so the

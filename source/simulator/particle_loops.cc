@@ -163,7 +163,7 @@ namespace psmpm
               // One pass over all particles, but its streams (five arrays
               // and the grid's) are too many for the hardware prefetcher
               // alone: 0.55 -> 0.37 s of 100 Powell-Sabin steps on the
-              // throughput bar (doc/performance.md, stop 42).
+              // throughput bar (doc/performance.md, "Prefetching the chunks' arrays").
               if (p + prefetch_distance < particles.size())
                 {
                   const std::size_t ahead = p + prefetch_distance;

@@ -40,7 +40,7 @@ namespace psmpm
         "Reject a fixed Time step above h_min/c_p and a Courant "
         "number above 1 before the run (and warn if the moving grid of "
         "Transfer/Scheme = otm compresses below it). Switch off only to "
-        "measure stability limits (contrib/stability_study.py).");
+        "measure stability limits (contrib/studies/stability/stability_study.py).");
       prm.leave_subsection();
     }
 

@@ -20,7 +20,7 @@ namespace psmpm
       /// last coordinate). Each power is std::pow as before, computed
       /// once per coordinate instead of once per monomial, and nothing
       /// is allocated (this runs at every quadrature point of every
-      /// cell at set-up: doc/performance.md, stop 33).
+      /// cell at set-up).
       template <int dim>
       void
       monomials(const Point<dim>  &x,

@@ -140,7 +140,7 @@ namespace psmpm
       /// pivoting, stopped after n_modes steps, picks n_modes columns of
       /// X that span the modes: with S_pp = R^T R, Q = X_p R^-1 has
       /// Q^T E Q = I. Three solves with E and a 3 x 3 triangle, where a
-      /// symmetric eigensolver (LAPACK, before stop 33) cost three
+      /// symmetric eigensolver (LAPACK) would cost three
       /// quarters of the set-up's instructions.
       void
       modes_of(const FullMatrix<double> &E,

@@ -4,7 +4,7 @@
 // Issue 9's suite with the defaults (Mass matrix/Type = automatic,
 // Transfer/Scheme = automatic, Time/Time step = 0: the automatic step
 // recomputed every step), both bases, short versions of the scenes of
-// contrib/defaults_suite.sh (which runs them in full):
+// contrib/studies/stability/defaults_suite.sh (which runs them in full):
 // * every run completes (no monitor fires: volume, CG, energy growth
 //   without external work, non-finite values);
 // * particle mass is unchanged;

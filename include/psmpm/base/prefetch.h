@@ -20,8 +20,8 @@ namespace psmpm
    * chunk (the velocity gradient reading the basis, the rotation
    * statistic reading the initial positions, ...) waited for memory at
    * the start of every run and page, which the hardware prefetcher
-   * learns anew (doc/performance.md, "Prefetching the chunks' arrays
-   * (stop 42)"). 64 particles ahead is 0.6-3 us of work per loop for
+   * learns anew (doc/performance.md, "Prefetching the chunks' arrays").
+   * 64 particles ahead is 0.6-3 us of work per loop for
    * Powell-Sabin, 0.2-0.6 us for P1, and 25 kB of a chunk's arrays:
    * against 16, 32 gave lumped P1 a 9 % shorter loop and 64 another 5 %,
    * with Powell-Sabin within the noise (paired runs on the throughput

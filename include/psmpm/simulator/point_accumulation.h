@@ -74,7 +74,7 @@ namespace psmpm
             // its index accessors; here its products and sums, 0 + s00 g0
             // + s01 g1 and 0 + s01 g0 + s11 g1 (the 0 + drops out), in one
             // register for both components, then the same force terms: the
-            // same bits in fewer instructions (doc/performance.md, stop 41).
+            // same bits in fewer instructions (doc/performance.md, "One pass per step").
             const Pair s0 = {stress[0][0], stress[0][1]};
             const Pair s1 = {stress[0][1], stress[1][1]};
             const Pair f2 = load_pair(f);

@@ -53,9 +53,9 @@ namespace psmpm
       /// counts its patterns): while it is that of the last call, the
       /// positions of the blocks' entries in A's value array are those
       /// found then, and the set-up only gathers and inverts (the map
-      /// look-ups and the search through the rows had cost 2-3 % of a
+      /// look-ups and the search through the rows cost 2-3 % of a
       /// Powell-Sabin step on the throughput bar; doc/performance.md,
-      /// stop 42). 0: they are found again.
+      /// "Block Jacobi"). 0: they are found again.
       void
       initialize(const TrilinosWrappers::SparseMatrix &A,
                  const unsigned int                    block_size,
