@@ -4,6 +4,7 @@
   /usr/bin/python3 contrib/geomechanics/column_collapse_study.py
       [build/psmpm] [work dir] [--ratios 0.5,1,2,3,4] [--cells 20]
       [--bases linear,powell-sabin] [--floor 0.36|no-slip|frictionless]
+      [--set "Section/Entry=value" ...]
 
 prm/granular_column_collapse.prm (aluminium rods of Bui et al. 2008:
 rho 2650 kg/m^3, E 0.84 MPa, nu 0.3, Mohr-Coulomb phi 19.8 deg, psi 0,
@@ -43,6 +44,8 @@ parser.add_argument("--ratios", default="0.5,1,2,3,4")
 parser.add_argument("--cells", type=int, default=20)
 parser.add_argument("--bases", default="linear,powell-sabin")
 parser.add_argument("--floor", default="0.36")
+parser.add_argument("--set", action="append", default=[],
+                    help="an extra psmpm --set entry for every run")
 # Per basis the transfer: Powell-Sabin with MUSL keeps the energy books
 # (lumped mass); P1 with MUSL goes unstable at the toe of a cohesionless
 # flow, so P1 runs with APIC (doc/geomechanics.md).
@@ -110,6 +113,8 @@ def run(a, basis):
                "--set", f"Bodies/Body 1/Corners=0, 0, {d0}, {h0}",
                "--set", f"Time/End time={end}",
                "--set", "Output/Interval=0"] + floor_settings(args.floor)
+    for entry in args.set:
+        command += ["--set", entry]
     start = time.time()
     result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     wall = time.time() - start

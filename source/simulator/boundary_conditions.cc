@@ -521,6 +521,8 @@ namespace psmpm
 
       reactions.assign(columns.size(), 0.);
       wall_normal.assign(walls.size(), 0.);
+      hold_capacity.assign(walls.size(), 0.);
+      hold_change.assign(walls.size(), 0.);
     }
 
     template <int dim>
@@ -629,6 +631,7 @@ namespace psmpm
           const WallDof &wall = walls[w];
           const double   rn   = wall_normal[w];
           const double   m    = mass[wall.dof];
+          hold_capacity[w]    = 0;
           if (!(rn * wall.outward < 0) || !(m > 0))
             continue;
           const double v =
@@ -638,6 +641,7 @@ namespace psmpm
           const double bound = wall.mu * std::abs(rn) * dt / m;
           const double next =
             trial - std::copysign(std::min(std::abs(trial), bound), trial);
+          hold_capacity[w]     = bound - std::abs(next - trial);
           const double changed = (next - v) / dt;
           const double force   = m * (changed - at);
           at                   = changed;
@@ -677,11 +681,66 @@ namespace psmpm
 
     template <int dim>
     void
-    BoundaryConditions<dim>::impose_velocity(State<dim> &state) const
+    BoundaryConditions<dim>::impose_velocity(State<dim> &state)
     {
       for (const auto &p : prescribed_dofs)
         state.grid_velocity[p.dof][p.component] =
           prescribed[p.boundary].new_value[p.component];
+      // The same Coulomb bound on the velocity particles move with: a
+      // projection after the friction (MUSL's, APIC's second) gives a DoF
+      // that sticks a tangential velocity again, from its neighbours'
+      // accelerations. A wall that sticks holds it with what is left of
+      // mu |R_n| dt, and the particles receive the same change (as FLIP
+      // receives the grid's), so that their velocities and motion stay
+      // one field. (Left sliding, the next step's friction pulled the DoF
+      // back and fed energy into a slope at rest on a frictional floor;
+      // held without the particles' change, the particles kept a velocity
+      // that they did not move with, and column collapses went unstable.)
+      if (state.grid_velocity.size() != wall_of.size())
+        return;
+      bool        held = false;
+      const auto &mass = state.grid->lumped_mass();
+      double      work = 0;
+      for (unsigned int w = 0; w < walls.size(); ++w)
+        {
+          const WallDof &wall = walls[w];
+          double        &vt   = state.grid_velocity[wall.dof][wall.tangential];
+          double         change = 0;
+          if (hold_capacity[w] > 0 && vt != 0)
+            {
+              change =
+                -std::copysign(std::min(std::abs(vt), hold_capacity[w]), vt);
+              work += mass[wall.dof] * change * (vt + 0.5 * change);
+              vt += change;
+              held = true;
+            }
+          hold_change[w] = change;
+        }
+      accumulated_friction_work += work;
+      if (held)
+        hold_particles(state);
+    }
+
+    template <int dim>
+    void
+    BoundaryConditions<dim>::hold_particles(State<dim> &state) const
+    {
+      auto              &particles = state.particles;
+      const auto        &grid      = *state.grid;
+      const unsigned int n         = grid.dofs_per_cell;
+      const auto        &dofs      = grid.cell_dofs();
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        {
+          const unsigned int base = particles.cell[p] * n;
+          const double      *phi  = &state.shape_values[p * n];
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              const unsigned int w = wall_of[dofs[base + k]];
+              if (w != invalid && hold_change[w] != 0)
+                particles.velocity[p][walls[w].tangential] +=
+                  phi[k] * hold_change[w];
+            }
+        }
     }
 
     template <int dim>

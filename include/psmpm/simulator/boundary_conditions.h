@@ -108,21 +108,24 @@ namespace psmpm
        * state.grid_acceleration (after its solve). The tangential
        * velocity v_t of a frictional DoF is state.grid_velocity's: this
        * step's with APIC (solved first), the last step's final one with
-       * MUSL and USL. (The current lumped momentum over the lumped mass
-       * instead, summed from the particles at the walls, let a block that
-       * should stick creep on tests/mpm/wall_friction_01: MUSL, 3e-3
-       * and 1.5e-2 m/s after 0.3 s against 8e-4 and 6e-4, P1 ghost
-       * penalty and Powell-Sabin lumped; the sliding accelerations agreed
-       * within 0.1 %.)
+       * MUSL and USL, which the hold of impose_velocity() and the
+       * particles share. A DoF that sticks keeps the rest of its Coulomb
+       * bound for that hold.
        */
       void
       after_acceleration(State<dim> &state);
 
       /// The prescribed velocities at the end of the step into
-      /// state.grid_velocity.
+      /// state.grid_velocity, and the hold of the walls that stick.
       void
-      impose_velocity(State<dim> &state) const;
+      impose_velocity(State<dim> &state);
 
+    private:
+      /// The hold's change of the wall DoFs to the particles' velocities.
+      void
+      hold_particles(State<dim> &state) const;
+
+    public:
       /// Reaction columns (the last step's) and the accumulated work.
       void
       add_columns(Postprocess::StatisticsTable &table) const;
@@ -251,6 +254,13 @@ namespace psmpm
       /// Per column, whether it belongs to a prescribed boundary.
       std::vector<bool>   column_prescribed;
       std::vector<double> reactions, wall_normal;
+      /// Per wall DoF, the tangential velocity change that the step's
+      /// Coulomb bound mu |R_n| dt / m still allows after the friction of
+      /// after_acceleration() (0 when it slides or is not in contact).
+      std::vector<double> hold_capacity;
+      /// Per wall DoF, the tangential velocity change of the hold in the
+      /// last impose_velocity().
+      std::vector<double> hold_change;
       /// The last step's reactions (the prescribed work's extrapolation;
       /// empty before the first step).
       std::vector<double> previous_reactions;
