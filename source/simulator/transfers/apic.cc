@@ -102,6 +102,32 @@ namespace psmpm
             "sum_i N_i v_i^{n+1} + a (v_p + dt sum_i N_i a_i), a = this "
             "fraction. 0 = PIC (APIC proper: the affine matrix carries what "
             "the projection cannot).");
+          prm.declare_entry(
+            "FLIP affine matrix",
+            "false",
+            Patterns::Bool(),
+            "Whether the FLIP fraction a of the apic scheme also blends the "
+            "affine matrix: C_p = (1 - a) C(v^{n+1}) + a (C_p + C(dt a)), "
+            "C(w) the affine matrix of the grid field w (affine FLIP).");
+          prm.declare_entry(
+            "XPIC order",
+            "1",
+            Patterns::Integer(1, 8),
+            "Order m of the extended particle-in-cell update (XPIC(m), "
+            "Hammerquist and Nairn 2017) of the apic scheme with the "
+            "control-point affine matrix: the particles take the affine "
+            "fields of v^{n+1} + sum_{k=1}^{m-1} (I - Q)^k v^n, Q = the "
+            "round trip grid -> particles -> grid. A grid mode that Q "
+            "keeps by a factor q loses 1 - q per step with 1 (APIC), "
+            "(1 - q)^m with m; each order above 1 costs one more round "
+            "trip per step.");
+          prm.declare_entry(
+            "Position update",
+            "particle velocity",
+            Patterns::Selection("particle velocity|grid velocity"),
+            "What the apic scheme moves the particles with: their new "
+            "velocity v_p, or the re-projected grid velocity at the "
+            "particle (the field of the stress update, as musl does).");
         }
 
         bool
@@ -114,7 +140,32 @@ namespace psmpm
         explicit APIC(ParameterHandler &prm)
           : matrix_choice(prm.get("Affine matrix"))
           , flip_fraction(prm.get_double("FLIP fraction"))
+          , flip_affine(prm.get_bool("FLIP affine matrix"))
+          , xpic_order(prm.get_integer("XPIC order"))
+          , move_with_grid(prm.get("Position update") == "grid velocity")
         {
+        }
+
+        void
+        initialize(const State<dim> &state) override
+        {
+          setup(state);
+          AssertThrow(xpic_order == 1 || mode == AffineMatrix::control_points,
+                      ExcMessage(
+                        "Transfer/XPIC order = " + std::to_string(xpic_order) +
+                        " needs the control-point affine matrix (Transfer/"
+                        "Affine matrix = control points, or automatic with a "
+                        "quadratic space); the affine matrix here is '" +
+                        matrix_choice + "' with a space of degree " +
+                        std::to_string(state.space->degree()) + "."));
+          AssertThrow(!flip_affine || mode == AffineMatrix::control_points,
+                      ExcMessage(
+                        "Transfer/FLIP affine matrix = true needs the "
+                        "control-point affine matrix (Transfer/Affine matrix "
+                        "= control points, or automatic with a quadratic "
+                        "space); the affine matrix here is '" +
+                        matrix_choice + "' with a space of degree " +
+                        std::to_string(state.space->degree()) + "."));
         }
 
         bool
@@ -130,6 +181,8 @@ namespace psmpm
           }
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
+          if (xpic_order > 1 && !xpic_correction(state, monitor, timer))
+            return false;
           forces_to_grid(state, timer);
           if (!this->solve(state, state.grid_acceleration, monitor, timer))
             return false;
@@ -139,6 +192,13 @@ namespace psmpm
             state.grid_velocity[l] += state.dt * state.grid_acceleration[l];
           if (state.boundary_conditions)
             state.boundary_conditions->impose_velocity(state);
+          if (xpic_order > 1)
+            {
+              for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
+                state.grid_velocity[l] += correction[l];
+              if (state.boundary_conditions)
+                state.boundary_conditions->impose_velocity(state);
+            }
           velocities_to_particles(state, timer);
           {
             PhaseTimer::Scope t(timer, "particle to grid");
@@ -222,6 +282,23 @@ namespace psmpm
         void
         affine_momentum_to_grid(State<dim> &state)
         {
+          const auto &particles = state.particles;
+          affine_momentum_to_grid(state,
+                                  [&](const std::size_t p,
+                                      Tensor<1, dim>   &v,
+                                      Tensor<2, dim>   &C) {
+                                    v = particles.velocity[p];
+                                    C = particles.affine[p];
+                                  });
+        }
+
+        /// The same for the affine fields that @p field(p, v, C) gives at
+        /// the particles' positions (a template: the loop calls no
+        /// function per particle).
+        template <typename AffineField>
+        void
+        affine_momentum_to_grid(State<dim> &state, const AffineField &field)
+        {
           auto &grid = *state.grid;
           grid.zero_cell_rhs();
           const auto         &particles  = state.particles;
@@ -233,12 +310,13 @@ namespace psmpm
           affine_momentum.assign(cells.rhs.size(), Tensor<1, dim>());
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
-              const unsigned int    base = particles.cell[p] * n;
-              const double          m    = particles.mass[p];
-              const Point<dim>     &x    = particles.position[p];
-              const Tensor<1, dim> &v    = particles.velocity[p];
-              const Tensor<2, dim> &C    = particles.affine[p];
-              const double         *phi  = &state.shape_values[p * n];
+              const unsigned int base = particles.cell[p] * n;
+              const double       m    = particles.mass[p];
+              const Point<dim>  &x    = particles.position[p];
+              Tensor<1, dim>     v;
+              Tensor<2, dim>     C;
+              field(p, v, C);
+              const double *phi = &state.shape_values[p * n];
               for (unsigned int k = 0; k < n; ++k)
                 {
                   const double mk = m * phi[k];
@@ -268,6 +346,91 @@ namespace psmpm
                         rhs[base + k] += D[k * n + l] * u;
                   }
             }
+        }
+
+        /**
+         * XPIC(m) through the APIC transfers: with T the grid-to-particle
+         * map (v_p and C_p = B_p D_p^{-1} of a grid field) and G the
+         * particle-to-grid map (the grid momentum of the affine fields,
+         * solved), Q = G T is symmetric and 0 <= Q <= I in the lumped mass
+         * norm (T is the adjoint of G, and a particle's weighted least
+         * squares fit has no more energy than the grid values it fits). APIC
+         * replaces the particles by T v^{n+1}, so a grid mode that Q keeps
+         * by q loses 1 - q of its amplitude every step: the damping of
+         * resolved modes with lumped mass. With v^n = G s^n the particles
+         * here take T (v^{n+1} + c), c = sum_{k=1}^{m-1} r_k, r_0 = v^n,
+         * r_k = r_{k-1} - Q r_{k-1}: their new fields are (1 - (I - T G)^m)
+         * s^n + T dt a, which loses (1 - q)^m per step, still removes
+         * what the grid cannot see (q = 0) and is non-expansive. An affine
+         * field is a fixed point of Q (c = 0), and both maps keep angular
+         * momentum (c carries none), so both stay carried exactly.
+         * c goes to `correction`; returns false on a failed solve.
+         */
+        bool
+        xpic_correction(State<dim>       &state,
+                        StabilityMonitor &monitor,
+                        PhaseTimer       &timer)
+        {
+          residual = state.grid_velocity;
+          correction.assign(residual.size(), Tensor<1, dim>());
+          for (unsigned int k = 1; k < xpic_order; ++k)
+            {
+              {
+                PhaseTimer::Scope t(timer, "particle to grid");
+                // r_0 is a velocity: directions of D_p without support keep
+                // the particle's C_p, as in the update itself; r_k, k > 0,
+                // are differences of velocities, which keep nothing there.
+                const bool keep_affine = k == 1;
+                affine_momentum_to_grid(
+                  state,
+                  [&](const std::size_t p,
+                      Tensor<1, dim>   &v,
+                      Tensor<2, dim>   &C) {
+                    affine_field(state, residual, p, keep_affine, v, C);
+                  });
+              }
+              if (!this->solve(state, round_trip, monitor, timer))
+                return false;
+              for (std::size_t l = 0; l < residual.size(); ++l)
+                {
+                  residual[l] -= round_trip[l];
+                  correction[l] += residual[l];
+                }
+            }
+          return true;
+        }
+
+        /// T @p field at particle @p p: v = sum_i N_i w_i, C = B_p D_p^{-1}.
+        void
+        affine_field(const State<dim>                  &state,
+                     const std::vector<Tensor<1, dim>> &field,
+                     const std::size_t                  p,
+                     const bool                         keep_affine,
+                     Tensor<1, dim>                    &v,
+                     Tensor<2, dim>                    &C) const
+        {
+          const auto             &particles = state.particles;
+          const unsigned int      n         = state.grid->dofs_per_cell;
+          const unsigned int     *dofs      = state.grid->cell_dofs().data();
+          const unsigned int      base      = particles.cell[p] * n;
+          const Point<dim>       &x         = particles.position[p];
+          const double           *phi       = &state.shape_values[p * n];
+          Tensor<2, dim>          B;
+          SymmetricTensor<2, dim> D;
+          v = Tensor<1, dim>();
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              const unsigned int    l  = dofs[base + k];
+              const Tensor<1, dim> &vk = field[l];
+              const Tensor<1, dim>  r  = control_points[l] - x;
+              v += phi[k] * vk;
+              B += phi[k] * outer_product(vk, r);
+              D += phi[k] * symmetrize(outer_product(r, r));
+            }
+          C =
+            affine_matrix(B,
+                          D,
+                          keep_affine ? particles.affine[p] : Tensor<2, dim>());
         }
 
         static void
@@ -347,13 +510,14 @@ namespace psmpm
           const unsigned int  n         = state.grid->dofs_per_cell;
           const unsigned int *dofs      = state.grid->cell_dofs().data();
           const bool          fit       = mode == AffineMatrix::control_points;
+          const bool affine_increment = fit && flip_affine && flip_fraction > 0;
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               const unsigned int      base = particles.cell[p] * n;
               const Point<dim>       &x    = particles.position[p];
               const double           *phi  = &state.shape_values[p * n];
               Tensor<1, dim>          v;
-              Tensor<2, dim>          B;
+              Tensor<2, dim>          B, B_increment;
               SymmetricTensor<2, dim> D;
               for (unsigned int k = 0; k < n; ++k)
                 {
@@ -365,6 +529,9 @@ namespace psmpm
                       const Tensor<1, dim> r = control_points[l] - x;
                       B += phi[k] * outer_product(vk, r);
                       D += phi[k] * symmetrize(outer_product(r, r));
+                      if (affine_increment)
+                        B_increment +=
+                          phi[k] * outer_product(state.grid_acceleration[l], r);
                     }
                 }
               if (flip_fraction > 0)
@@ -378,7 +545,15 @@ namespace psmpm
                 }
               else
                 particles.velocity[p] = v;
-              if (fit)
+              if (affine_increment)
+                particles.affine[p] =
+                  (1 - flip_fraction) *
+                    affine_matrix(B, D, particles.affine[p]) +
+                  flip_fraction *
+                    (particles.affine[p] +
+                     state.dt *
+                       affine_matrix(B_increment, D, Tensor<2, dim>()));
+              else if (fit)
                 particles.affine[p] = affine_matrix(B, D, particles.affine[p]);
               else if (mode == AffineMatrix::none)
                 particles.affine[p] = Tensor<2, dim>();
@@ -405,16 +580,24 @@ namespace psmpm
               const unsigned int    base = particles.cell[p] * n;
               const Tensor<1, dim> *grad =
                 state.gradients(p, particles.cell[p]);
-              Tensor<2, dim>        L; // L_ij = dv_i/dx_j
+              Tensor<2, dim> L; // L_ij = dv_i/dx_j
               for (unsigned int k = 0; k < n; ++k)
                 L +=
                   outer_product(state.grid_velocity[dofs[base + k]], grad[k]);
+              Tensor<1, dim> velocity = particles.velocity[p];
+              if (move_with_grid)
+                {
+                  const double *phi = &state.shape_values[p * n];
+                  velocity          = Tensor<1, dim>();
+                  for (unsigned int k = 0; k < n; ++k)
+                    velocity += phi[k] * state.grid_velocity[dofs[base + k]];
+                }
               if (gradient)
                 particles.affine[p] = L;
               else if (rotation)
                 particles.affine[p] = 0.5 * (L - transpose(L));
               increments[p]           = dt * L;
-              const Tensor<1, dim> du = dt * particles.velocity[p];
+              const Tensor<1, dim> du = dt * velocity;
               particles.displacement[p] += du;
               particles.position[p] += du;
             }
@@ -423,6 +606,7 @@ namespace psmpm
 
         std::string             matrix_choice;
         double                  flip_fraction = 0;
+        bool                    flip_affine   = false;
         AffineMatrix            mode          = AffineMatrix::control_points;
         bool                    flip          = false; ///< FLIP velocity update
         std::vector<Point<dim>> control_points; ///< local relevant numbering
@@ -432,6 +616,10 @@ namespace psmpm
         std::vector<Tensor<1, dim>> affine_momentum; ///< q_k per cell DoF
         std::vector<Tensor<2, dim>> increments;
         std::vector<double>         volume_ratio;
+        // XPIC(m): grid fields in local relevant numbering.
+        unsigned int                xpic_order     = 1;
+        bool                        move_with_grid = false;
+        std::vector<Tensor<1, dim>> residual, round_trip, correction;
       };
     } // namespace
 
