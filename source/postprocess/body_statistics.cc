@@ -13,8 +13,8 @@ namespace psmpm
   {
     template <int dim>
     void
-    BodyStatistics<dim>::add_columns(const Simulator::State<dim> &state,
-                                     StatisticsTable                &statistics)
+    BodyStatistics<dim>::add_columns(const StateView<dim> &state,
+                                     StatisticsTable      &statistics)
     {
       const auto        &particles = state.particles;
       const unsigned int n         = particles.n_bodies;

@@ -10,7 +10,7 @@ namespace psmpm
   {
     template <int dim>
     Energies<dim>
-    EnergyStatistics<dim>::compute(const Simulator::State<dim> &state) const
+    EnergyStatistics<dim>::compute(const StateView<dim> &state) const
     {
       Energies<dim> e;
       accumulate(state, 0, state.particles.size(), e);
@@ -19,10 +19,10 @@ namespace psmpm
 
     template <int dim>
     void
-    EnergyStatistics<dim>::accumulate(const Simulator::State<dim> &state,
-                                      const std::size_t            first,
-                                      const std::size_t            last,
-                                      Energies<dim>               &sums) const
+    EnergyStatistics<dim>::accumulate(const StateView<dim> &state,
+                                      const std::size_t     first,
+                                      const std::size_t     last,
+                                      Energies<dim>        &sums) const
     {
       const auto &particles = state.particles;
       // The sums in registers, not through the reference (as in

@@ -20,8 +20,8 @@ namespace psmpm
 
     template <int dim>
     Errors
-    ErrorNorms<dim>::compute(const Simulator::State<dim> &state,
-                             const Reference<dim>        &reference)
+    ErrorNorms<dim>::compute(const StateView<dim> &state,
+                             const Reference<dim> &reference)
     {
       Errors      e;
       const auto &particles = state.particles;
@@ -45,9 +45,9 @@ namespace psmpm
 
     template <int dim>
     void
-    ErrorNorms<dim>::execute(const Simulator::State<dim> &state,
-                             const bool                   last,
-                             StatisticsTable                &statistics)
+    ErrorNorms<dim>::execute(const StateView<dim> &state,
+                             const bool            last,
+                             StatisticsTable      &statistics)
     {
       const char *columns[] = {"displacement_L2", "velocity_L2", "stress_L2"};
       if (state.step % interval != 0 && !last)
@@ -71,15 +71,15 @@ namespace psmpm
 
     template <int dim>
     Errors
-    ErrorNorms<dim>::current(const Simulator::State<dim> &state) const
+    ErrorNorms<dim>::current(const StateView<dim> &state) const
     {
       return latest_step == state.step ? latest : compute(state, reference);
     }
 
     template <int dim>
     void
-    ErrorNorms<dim>::fill_summary(const Simulator::State<dim> &state,
-                                  Summary                     &summary) const
+    ErrorNorms<dim>::fill_summary(const StateView<dim> &state,
+                                  Summary              &summary) const
     {
       const Errors e = current(state);
       summary.set("errors.displacement_L2", e.displacement);

@@ -17,8 +17,8 @@ namespace psmpm
   {
     template <int dim>
     typename RotationStatistics<dim>::Values
-    RotationStatistics<dim>::compute(const Simulator::State<dim> &state,
-                                     const bool                   affine_part)
+    RotationStatistics<dim>::compute(const StateView<dim> &state,
+                                     const bool            affine_part)
     {
       prepare(state);
       Sums sums;
@@ -28,7 +28,7 @@ namespace psmpm
 
     template <int dim>
     void
-    RotationStatistics<dim>::prepare(const Simulator::State<dim> &state)
+    RotationStatistics<dim>::prepare(const StateView<dim> &state)
     {
       if constexpr (dim == 2)
         {
@@ -61,11 +61,11 @@ namespace psmpm
 
     template <int dim>
     void
-    RotationStatistics<dim>::accumulate(const Simulator::State<dim> &state,
-                                        const std::size_t            first_p,
-                                        const std::size_t            last_p,
-                                        const bool affine_part,
-                                        Sums      &sums) const
+    RotationStatistics<dim>::accumulate(const StateView<dim> &state,
+                                        const std::size_t     first_p,
+                                        const std::size_t     last_p,
+                                        const bool            affine_part,
+                                        Sums                 &sums) const
     {
       if constexpr (dim == 2)
         {

@@ -17,9 +17,9 @@ namespace psmpm
 
     template <int dim>
     void
-    StepSums<dim>::updated(const Simulator::State<dim> &state,
-                           const std::size_t            first,
-                           const std::size_t            last)
+    StepSums<dim>::updated(const StateView<dim> &state,
+                           const std::size_t     first,
+                           const std::size_t     last)
     {
       if (first == 0)
         {
@@ -43,8 +43,7 @@ namespace psmpm
 
     template <int dim>
     std::pair<Energies<dim>, typename RotationStatistics<dim>::Values>
-    StepSums<dim>::compute(const Simulator::State<dim> &state,
-                           const bool                   affine_part)
+    StepSums<dim>::compute(const StateView<dim> &state, const bool affine_part)
     {
       // Every rank makes the same collective calls on either path: the
       // energies' reduction, then the rotation's (prepare() has nothing

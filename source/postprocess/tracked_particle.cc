@@ -26,7 +26,7 @@ namespace psmpm
 
     template <int dim>
     void
-    TrackedParticle<dim>::initialize(const Simulator::State<dim> &state)
+    TrackedParticle<dim>::initialize(const StateView<dim> &state)
     {
       const auto   &particles = state.particles;
       double        best      = std::numeric_limits<double>::max();
@@ -46,7 +46,7 @@ namespace psmpm
 
     template <int dim>
     void
-    TrackedParticle<dim>::execute(const Simulator::State<dim> &state)
+    TrackedParticle<dim>::execute(const StateView<dim> &state)
     {
       // Sum over ranks: only the owner contributes.
       std::vector<double> v(5, 0.);

@@ -13,7 +13,6 @@
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
 #include <psmpm/mesh/confinement.h>
-#include <psmpm/postprocess/body_statistics.h>
 #include <psmpm/postprocess/progress.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/simulator.h>
@@ -34,6 +33,28 @@ namespace psmpm
       split(const std::string &s)
       {
         return Utilities::split_string_list(s, ',');
+      }
+
+      /// The numbers of the list entry @p entry (of the current
+      /// subsection @p path): its pattern takes numbers string_to_double
+      /// refuses (subnormals such as 4.9e-324).
+      std::vector<double>
+      get_numbers(ParameterHandler  &prm,
+                  const std::string &path,
+                  const std::string &entry)
+      {
+        try
+          {
+            return Utilities::string_to_double(split(prm.get(entry)));
+          }
+        catch (const std::exception &)
+          {
+            AssertThrow(false,
+                        ExcMessage(path + "/" + entry + " = '" +
+                                   prm.get(entry) +
+                                   "': not a list of numbers."));
+          }
+        return {};
       }
 
       /// Whether @p value is on a space's list of verified mass matrices
@@ -87,6 +108,7 @@ namespace psmpm
       StabilityMonitor::declare_parameters(prm);
       Checkpoint::declare_parameters(prm);
       Postprocess::OutputWriter<2>::declare_parameters(prm);
+      Postprocessors<2>::declare_parameters(prm);
 
       // Basis/Type lists the spaces of both dimensions (bspline is 1D
       // only, powell-sabin 2D only); creation rejects the wrong one.
@@ -156,19 +178,6 @@ namespace psmpm
                         Patterns::Integer(0),
                         "Write VTU output every this many steps (0: first and "
                         "last step only).");
-      prm.declare_entry("Error interval",
-                        "1",
-                        Patterns::Integer(1),
-                        "Compute error norms against the reference every this "
-                        "many steps (and at the end).");
-      prm.declare_entry("Tracked point",
-                        "",
-                        Patterns::List(Patterns::Double(), 0, 2),
-                        "Initial position (one coordinate per dimension): the "
-                        "particle that starts nearest to it is recorded every "
-                        "step in tracked_particle.txt with the reference, and "
-                        "the RMS of the differences over time goes into "
-                        "summary.json (a grid-crossing noise measure).");
       prm.leave_subsection();
     }
 
@@ -270,7 +279,7 @@ namespace psmpm
       prm.leave_subsection();
 
       prm.enter_subsection("Body force");
-      const auto g = Utilities::string_to_double(split(prm.get("Gravity")));
+      const auto g = get_numbers(prm, "Body force", "Gravity");
       prm.leave_subsection();
       // The default "0, 0" must work in 1D too: components beyond dim
       // are accepted only if they are zero.
@@ -309,16 +318,12 @@ namespace psmpm
 
       prm.enter_subsection("Output");
       output_interval = prm.get_integer("Interval");
-      error_interval  = prm.get_integer("Error interval");
       subdivisions    = prm.get_integer("Subdivisions");
       particle_format = Postprocess::OutputWriter<dim>::parse_particle_format(
         prm.get("Particle format"));
-      tracked_point =
-        Utilities::string_to_double(split(prm.get("Tracked point")));
       prm.leave_subsection();
-      AssertThrow(tracked_point.empty() || tracked_point.size() == dim,
-                  ExcMessage("Output/Tracked point must be empty or have " +
-                             std::to_string(dim) + " coordinate(s)."));
+      // Their own entries (Output/Error interval, Output/Tracked point).
+      postprocessors.parse_parameters(prm);
       // HDF5 (and XDMF) store points in 2 or 3 coordinates only.
       AssertThrow(particle_format == Postprocess::ParticleFormat::vtu ||
                     dim >= 2,
@@ -649,8 +654,11 @@ namespace psmpm
     Simulator<dim>::do_time_step(const double dt)
     {
       state.dt = dt;
-      transfer->observe_updated_chunks(transfer->carries_affine() ? nullptr :
-                                                                    &step_sums);
+      transfer->observe_updated_chunks(
+        transfer->carries_affine() ||
+            !postprocessors.observes_updated_chunks() ?
+          nullptr :
+          &postprocessors);
       // On a grid that moves with the material the particles keep their
       // cells (and the scheme has evaluated the basis on the moved grid).
       // Otherwise the scheme may locate them chunk by chunk as it moves
@@ -692,7 +700,19 @@ namespace psmpm
     Postprocess::Energies<dim>
     Simulator<dim>::compute_energies() const
     {
-      return energy_statistics.compute(state);
+      return Postprocess::EnergyStatistics<dim>().compute(state);
+    }
+
+    template <int dim>
+    Postprocess::StateView<dim>
+    Simulator<dim>::view() const
+    {
+      Postprocess::StateView<dim> v = state;
+      v.reference                   = reference.get();
+      v.carries_affine              = transfer && transfer->carries_affine();
+      v.last_step                   = time_step_control.finished(state.time);
+      v.output_directory            = output_directory;
+      return v;
     }
 
     template <int dim>
@@ -700,37 +720,21 @@ namespace psmpm
     Simulator<dim>::postprocess(const double wall_time)
     {
       PhaseTimer::Scope t(timer, "statistics");
-      const auto [e, rotation] =
-        step_sums.compute(state, transfer->carries_affine());
-      const auto &gs = state.grid->statistics();
       statistics.add_value("step", state.step);
       statistics.add_value("time", state.time);
       statistics.add_value("dt", state.dt);
-      Postprocess::EnergyStatistics<dim>::add_columns(e, statistics);
-      rotation_statistics.add_columns(rotation, statistics);
-      Postprocess::BodyStatistics<dim>::add_columns(state, statistics);
-      statistics.add_value("cg_iterations", gs.iterations);
-      statistics.add_value("condition_number", gs.condition_number);
-      statistics.add_value("min_relative_diagonal", gs.min_relative_diagonal);
-      statistics.add_value("treated_dofs", gs.n_treated_dofs);
-      statistics.add_value("stabilized_cells", gs.n_stabilized_cells);
-      statistics.add_value("mass_diag_ratio",
-                           gs.max_diagonal > 0 ?
-                             gs.min_diagonal / gs.max_diagonal :
-                             0.);
+      // A reference computed alongside the run (ULFEM, the cantilever)
+      // is at the step's time before the postprocessors compare with it.
       if (reference)
         {
           step_times.push_back(state.time);
           reference->advance_to(state.time);
-          error_norms->execute(state,
-                               time_step_control.finished(state.time),
-                               statistics);
-          if (tracked)
-            tracked->execute(state);
         }
+      postprocessors.execute(view(), statistics);
+      const Postprocess::EnergyBalance e = postprocessors.energy_balance();
       // The walls' work enters the energy book: what they did to the
       // body is no growth of energy.
-      double total_energy = e.total();
+      double total_energy = e.total;
       if (state.boundary_conditions)
         {
           boundary_conditions.add_columns(statistics);
@@ -738,7 +742,7 @@ namespace psmpm
             boundary_conditions.monitored_energy(total_energy, state.step);
         }
       statistics.add_value("wall_time", wall_offset + wall_time);
-      if (monitor.check(total_energy, e.scale(), e.momentum.norm(), comm) &&
+      if (monitor.check(total_energy, e.scale, e.momentum, comm) &&
           status == Status::completed)
         {
           status      = Status::unstable;
@@ -763,8 +767,7 @@ namespace psmpm
                          {{"mass", &state.grid->lumped_mass()}},
                          transfer->moved_vertices());
       write_statistics();
-      if (tracked)
-        tracked->write(output_directory, comm);
+      postprocessors.write(view());
     }
 
     template <int dim>
@@ -773,24 +776,8 @@ namespace psmpm
     {
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         {
-          std::vector<std::string> columns = {"time",
-                                              "dt",
-                                              "kinetic_energy",
-                                              "strain_energy",
-                                              "gravity_energy",
-                                              "total_energy",
-                                              "mass",
-                                              "momentum_x",
-                                              "mass_diag_ratio",
-                                              "condition_number",
-                                              "min_relative_diagonal",
-                                              "wall_time"};
-          if (dim > 1)
-            columns.push_back("momentum_y");
-          if (reference)
-            for (const char *c :
-                 {"displacement_L2", "velocity_L2", "stress_L2"})
-              columns.push_back(c);
+          // The postprocessors format their own columns.
+          std::vector<std::string> columns = {"time", "dt", "wall_time"};
           if (state.boundary_conditions)
             {
               for (const auto &c : boundary_conditions.statistics_columns())
@@ -830,21 +817,7 @@ namespace psmpm
                                                          comm,
                                                          s,
                                                          particle_format);
-      if (reference)
-        {
-          error_norms =
-            std::make_unique<Postprocess::ErrorNorms<dim>>(*reference,
-                                                           error_interval);
-          if (!tracked_point.empty())
-            {
-              Point<dim> X;
-              for (unsigned int d = 0; d < dim; ++d)
-                X[d] = tracked_point[d];
-              tracked =
-                std::make_unique<Postprocess::TrackedParticle<dim>>(X,
-                                                                    *reference);
-            }
-        }
+      postprocessors.initialize(view());
     }
 
     template <int dim>
@@ -888,9 +861,8 @@ namespace psmpm
         }
       if (!resumed)
         {
-          if (tracked)
-            tracked->initialize(state);
           state.dt = 0;
+          postprocessors.start(view());
           postprocess(0);
           checked_write_output();
           checkpoint.start(state.step);
@@ -1062,13 +1034,9 @@ namespace psmpm
 
       time_step_control.save(archive);
       monitor.save(archive);
-      rotation_statistics.save(archive);
+      postprocessors.save(archive);
       if (state.boundary_conditions)
         boundary_conditions.save(archive);
-      if (error_norms)
-        error_norms->save(archive);
-      if (tracked)
-        tracked->save(archive);
       writer->save(archive);
       transfer->save(archive, state);
       // The same on every rank where a vertex is seen, 0 elsewhere.
@@ -1202,13 +1170,9 @@ namespace psmpm
           statistics.from_bytes(shared.get_bytes("simulator/statistics"));
           time_step_control.load(shared);
           monitor.load(shared);
-          rotation_statistics.load(shared);
+          postprocessors.load(shared);
           if (state.boundary_conditions)
             boundary_conditions.load(shared);
-          if (error_norms)
-            error_norms->load(shared);
-          if (tracked)
-            tracked->load(shared);
           writer->load(shared);
           state.grid->strategy().restore_history(
             shared.get("mass_strategy/history"));
@@ -1258,8 +1222,7 @@ namespace psmpm
     {
       write_statistics();
       writer->restore_files(state.step);
-      if (tracked)
-        tracked->write(output_directory, comm);
+      postprocessors.write(view());
     }
 
     template <int dim>
@@ -1325,13 +1288,7 @@ namespace psmpm
       summary.set("transfer", transfer_name);
       summary.set("reconstruction", reconstruction_name);
       summary.set("material", state.materials.model_names());
-      rotation_statistics.fill_summary(summary);
-      if (reference)
-        {
-          error_norms->fill_summary(state, summary);
-          if (tracked)
-            tracked->fill_summary(summary);
-        }
+      postprocessors.fill_summary(view(), summary);
       // Throughput of the time loop proper: every timed phase but output
       // and checkpoints (the per-step statistics included: on large
       // scenes they cost as much as a particle loop).

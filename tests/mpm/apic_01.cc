@@ -24,6 +24,8 @@
 // (c) linear momentum of (b) after 20 more steps (a stressed, deforming
 //     body) equals the initial one to round-off (to the CG tolerance for
 //     the matrix strategies).
+#include <psmpm/postprocess/rotation_statistics.h>
+
 #include "../mpm_tests.h"
 
 #include <map>

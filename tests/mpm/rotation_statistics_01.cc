@@ -13,6 +13,7 @@
 // - apic reports more than the particle sum at the start: the affine part
 //   of the rigid rotation, sum_p m_p sum_i N_i |X_i - x_p|^2 omega > 0.
 #include <psmpm/base/cross.h>
+#include <psmpm/postprocess/rotation_statistics.h>
 
 #include "../mpm_tests.h"
 

@@ -4,9 +4,8 @@
 #ifndef psmpm_postprocess_body_statistics_h
 #define psmpm_postprocess_body_statistics_h
 
+#include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
-
-#include <psmpm/simulator/state.h>
 
 namespace psmpm
 {
@@ -29,7 +28,7 @@ namespace psmpm
     {
     public:
       static void
-      add_columns(const Simulator::State<dim> &state, StatisticsTable &statistics);
+      add_columns(const StateView<dim> &state, StatisticsTable &statistics);
     };
   } // namespace Postprocess
 } // namespace psmpm

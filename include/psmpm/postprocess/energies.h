@@ -4,8 +4,8 @@
 #ifndef psmpm_postprocess_energies_h
 #define psmpm_postprocess_energies_h
 
+#include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/simulator/state.h>
 
 #include <array>
 
@@ -51,16 +51,16 @@ namespace psmpm
     {
     public:
       Energies<dim>
-      compute(const Simulator::State<dim> &state) const;
+      compute(const StateView<dim> &state) const;
 
       /// This rank's particles [@p first, @p last) added to the local
       /// sums @p sums, in particle order (compute() is accumulate() over all
       /// particles, then reduce()).
       void
-      accumulate(const Simulator::State<dim> &state,
-                 const std::size_t            first,
-                 const std::size_t            last,
-                 Energies<dim>               &sums) const;
+      accumulate(const StateView<dim> &state,
+                 const std::size_t     first,
+                 const std::size_t     last,
+                 Energies<dim>        &sums) const;
 
       /// The sums of all ranks.
       static Energies<dim>

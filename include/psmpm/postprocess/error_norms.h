@@ -4,11 +4,10 @@
 #ifndef psmpm_postprocess_error_norms_h
 #define psmpm_postprocess_error_norms_h
 
-#include <psmpm/postprocess/statistics_table.h>
-
 #include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/state_view.h>
+#include <psmpm/postprocess/statistics_table.h>
 #include <psmpm/postprocess/summary.h>
-#include <psmpm/simulator/state.h>
 
 namespace psmpm
 {
@@ -35,20 +34,19 @@ namespace psmpm
       ErrorNorms(const Reference<dim> &reference, const unsigned int interval);
 
       static Errors
-      compute(const Simulator::State<dim> &state,
-              const Reference<dim>        &reference);
+      compute(const StateView<dim> &state, const Reference<dim> &reference);
 
       void
-      execute(const Simulator::State<dim> &state,
-              const bool                   last,
-              StatisticsTable                &statistics);
+      execute(const StateView<dim> &state,
+              const bool            last,
+              StatisticsTable      &statistics);
 
       /// The errors now: the last computed ones if they are of this step.
       Errors
-      current(const Simulator::State<dim> &state) const;
+      current(const StateView<dim> &state) const;
 
       void
-      fill_summary(const Simulator::State<dim> &state, Summary &summary) const;
+      fill_summary(const StateView<dim> &state, Summary &summary) const;
 
       /// Maximum and sums over time, the latest errors (checkpoints).
       void

@@ -6,9 +6,9 @@
 
 #include <deal.II/base/point.h>
 
+#include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
 #include <psmpm/postprocess/summary.h>
-#include <psmpm/simulator/state.h>
 
 #include <vector>
 
@@ -51,8 +51,7 @@ namespace psmpm
       /// affine matrices may be nonzero (false for schemes that do not
       /// carry them: they are then not read).
       Values
-      compute(const Simulator::State<dim> &state,
-              const bool                   affine_part = true);
+      compute(const StateView<dim> &state, const bool affine_part = true);
 
       /// This rank's sums, before the reduction.
       struct Sums
@@ -67,13 +66,13 @@ namespace psmpm
       /// reduction; initial and last values). compute() is the three for
       /// all particles.
       void
-      prepare(const Simulator::State<dim> &state);
+      prepare(const StateView<dim> &state);
       void
-      accumulate(const Simulator::State<dim> &state,
-                 const std::size_t            first,
-                 const std::size_t            last,
-                 const bool                   affine_part,
-                 Sums                        &sums) const;
+      accumulate(const StateView<dim> &state,
+                 const std::size_t     first,
+                 const std::size_t     last,
+                 const bool            affine_part,
+                 Sums                 &sums) const;
       Values
       finish(const Sums &sums, MPI_Comm comm);
 

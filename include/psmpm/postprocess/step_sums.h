@@ -6,7 +6,7 @@
 
 #include <psmpm/postprocess/energies.h>
 #include <psmpm/postprocess/rotation_statistics.h>
-#include <psmpm/simulator/transfer_scheme.h>
+#include <psmpm/postprocess/state_view.h>
 
 namespace psmpm
 {
@@ -32,22 +32,22 @@ namespace psmpm
      * the particles' new cells, evaluated after the update.
      */
     template <int dim>
-    class StepSums : public Simulator::UpdatedChunkObserver<dim>
+    class StepSums
     {
     public:
       StepSums(const EnergyStatistics<dim> &energies,
                RotationStatistics<dim>     &rotation);
 
       void
-      updated(const Simulator::State<dim> &state,
-              const std::size_t            first,
-              const std::size_t            last) override;
+      updated(const StateView<dim> &state,
+              const std::size_t     first,
+              const std::size_t     last);
 
       /// The energies and rotation values of @p state after a step (or at
       /// the start): reduced from the chunks if they covered all its
       /// particles, else by a pass. Collective.
       std::pair<Energies<dim>, typename RotationStatistics<dim>::Values>
-      compute(const Simulator::State<dim> &state, const bool affine_part);
+      compute(const StateView<dim> &state, const bool affine_part);
 
     private:
       const EnergyStatistics<dim>           &energies;

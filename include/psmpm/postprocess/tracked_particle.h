@@ -6,8 +6,8 @@
 
 #include <psmpm/base/growing_text_file.h>
 #include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/summary.h>
-#include <psmpm/simulator/state.h>
 
 #include <array>
 #include <memory>
@@ -36,10 +36,10 @@ namespace psmpm
 
       /// Find the particle (smallest id among equally near ones).
       void
-      initialize(const Simulator::State<dim> &state);
+      initialize(const StateView<dim> &state);
 
       void
-      execute(const Simulator::State<dim> &state);
+      execute(const StateView<dim> &state);
 
       /// tracked_particle.txt in @p directory (rank 0), appended to.
       void

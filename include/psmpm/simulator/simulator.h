@@ -16,15 +16,13 @@
 #include <psmpm/postprocess/error_norms.h>
 #include <psmpm/postprocess/output_writer.h>
 #include <psmpm/postprocess/reference.h>
-#include <psmpm/postprocess/rotation_statistics.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/postprocess/step_sums.h>
 #include <psmpm/postprocess/summary.h>
-#include <psmpm/postprocess/tracked_particle.h>
 #include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/initial_stress.h>
 #include <psmpm/simulator/particle_relocation.h>
+#include <psmpm/simulator/postprocessors.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
@@ -261,6 +259,10 @@ namespace psmpm
       write_statistics();
       void
       create_postprocessors(const std::string &directory);
+      /// What the postprocessors read now: the state, the reference, the
+      /// transfer's affine matrices, the last step, the output directory.
+      Postprocess::StateView<dim>
+      view() const;
       /// After resume(): statistics.txt, the .pvd series and
       /// tracked_particle.txt as of the checkpoint; later VTU files removed.
       void
@@ -304,9 +306,7 @@ namespace psmpm
       /// Reactions, friction, prescribed velocities, boundary parts.
       BoundaryConditions<dim> boundary_conditions;
       unsigned int                              output_interval = 0;
-      unsigned int                              error_interval  = 1;
       unsigned int                              subdivisions    = 0;
-      std::vector<double>                       tracked_point;
       /// Output/Particle format.
       Postprocess::ParticleFormat particle_format =
         Postprocess::ParticleFormat::vtu;
@@ -316,18 +316,14 @@ namespace psmpm
       std::unique_ptr<TransferScheme<dim>> transfer;
       std::unique_ptr<TransferScheme<dim>> closed_transfer;
       /// Created by parse_parameters(), moved into the state by setup().
-      std::unique_ptr<Reconstruction<dim>>               reconstruction;
-      TimeStepControl                                    time_step_control;
-      StabilityMonitor                                   monitor;
-      std::unique_ptr<Postprocess::Reference<dim>>       reference;
-      Postprocess::EnergyStatistics<dim>                 energy_statistics;
-      Postprocess::RotationStatistics<dim>               rotation_statistics;
-      /// Their particle sums, collected during the transfer's update.
-      Postprocess::StepSums<dim> step_sums{energy_statistics,
-                                           rotation_statistics};
-      std::unique_ptr<Postprocess::ErrorNorms<dim>>      error_norms;
-      std::unique_ptr<Postprocess::TrackedParticle<dim>> tracked;
-      std::unique_ptr<Postprocess::OutputWriter<dim>>    writer;
+      std::unique_ptr<Reconstruction<dim>>         reconstruction;
+      TimeStepControl                              time_step_control;
+      StabilityMonitor                             monitor;
+      std::unique_ptr<Postprocess::Reference<dim>> reference;
+      /// Every registered postprocessor (energies, rotation, bodies, mass
+      /// solves, error norms, tracked particle, ...).
+      Postprocessors<dim>                             postprocessors;
+      std::unique_ptr<Postprocess::OutputWriter<dim>> writer;
 
       // Run record.
       std::string                  output_directory;

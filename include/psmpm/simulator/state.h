@@ -11,6 +11,7 @@
 #include <psmpm/material/material_set.h>
 #include <psmpm/mesh/cell_locator.h>
 #include <psmpm/particles/particle_set.h>
+#include <psmpm/postprocess/state_view.h>
 #include <psmpm/solver/grid_system.h>
 
 #include <memory>
@@ -74,6 +75,31 @@ namespace psmpm
       /// on a replicated mesh), or numbers::invalid_unsigned_int.
       unsigned int
       local_cell(const unsigned int whole) const;
+
+      /// What the postprocessors read: this state, without the run
+      /// around it (no reference, an affine transfer assumed).
+      operator Postprocess::StateView<dim>() const
+      {
+        return {comm,
+                triangulation.get(),
+                dof_handler,
+                space.get(),
+                locator,
+                grid.get(),
+                materials,
+                particles,
+                gravity,
+                shape_values,
+                grid_velocity,
+                grid_acceleration,
+                time,
+                step,
+                dt,
+                nullptr,
+                true,
+                false,
+                std::string()};
+      }
 
       MPI_Comm comm;
       /// Replicated (parallel::shared) or, with Mesh/Distribution =
