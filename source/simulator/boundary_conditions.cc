@@ -99,7 +99,7 @@ namespace psmpm
         "'no-slip' to fix the tangential velocity too). A frictional "
         "boundary must have its normal velocity fixed (Fixed x or Fixed "
         "y) and be straight and axis-aligned. Empty: frictionless walls. "
-        "One MPI rank, 2D, not with a grid that moves (otm).");
+        "2D, not with a grid that moves (otm).");
       prm.declare_entry(
         "Prescribed velocity",
         "",
@@ -373,11 +373,6 @@ namespace psmpm
                              "right-hand side of the other rows, which is "
                              "not implemented); this run has " +
                              grid.parameters.type + "."));
-      AssertThrow(friction.empty() || Utilities::MPI::n_mpi_processes(
-                                        grid.get_communicator()) == 1,
-                  ExcMessage("Boundary conditions/Friction coefficient: runs "
-                             "on one MPI rank only (a wall DoF's reaction "
-                             "is summed over the cells of one rank)."));
 
       // The boundaries per component in the order of attribution.
       std::array<std::vector<std::string>, dim> order;
@@ -523,6 +518,17 @@ namespace psmpm
       wall_normal.assign(walls.size(), 0.);
       hold_capacity.assign(walls.size(), 0.);
       hold_change.assign(walls.size(), 0.);
+      wall_owned.assign(walls.size(), true);
+      sum_over_ranks = !friction.empty() && Utilities::MPI::n_mpi_processes(
+                                              grid.get_communicator()) > 1;
+      if (sum_over_ranks)
+        {
+          const auto &owned = grid.locally_owned_dofs();
+          for (unsigned int w = 0; w < walls.size(); ++w)
+            wall_owned[w] = owned.is_element(relevant[walls[w].dof]);
+          relevant_buffer.assign(n_dofs, 0.);
+          owned_buffer.assign(owned.n_elements(), 0.);
+        }
     }
 
     template <int dim>
@@ -621,6 +627,20 @@ namespace psmpm
                 reactions[column] += patch.weight * ma;
               }
 
+      // A wall DoF's normal force is summed over the cells of every rank
+      // that holds some of them, so that every rank that sees the DoF
+      // applies the same friction to it.
+      if (sum_over_ranks)
+        {
+          const auto &exchange = grid.ghost_exchange();
+          for (unsigned int w = 0; w < walls.size(); ++w)
+            relevant_buffer[walls[w].dof] = wall_normal[w];
+          exchange.sum_to_owned(relevant_buffer, owned_buffer.data());
+          exchange.owned_to_relevant(owned_buffer.data(), relevant_buffer);
+          for (unsigned int w = 0; w < walls.size(); ++w)
+            wall_normal[w] = relevant_buffer[walls[w].dof];
+        }
+
       // Coulomb friction on the DoFs in contact (the wall pushes into the
       // body: R_n against the outward normal).
       const auto &mass       = grid.lumped_mass();
@@ -645,9 +665,13 @@ namespace psmpm
           const double changed = (next - v) / dt;
           const double force   = m * (changed - at);
           at                   = changed;
+          if (!wall_owned[w])
+            continue;
           reactions[wall.column] += force;
           work += force * 0.5 * (v + next) * dt;
         }
+      if (sum_over_ranks)
+        work = Utilities::MPI::sum(work, grid.get_communicator());
       accumulated_friction_work += work;
 
       const MPI_Comm comm = grid.get_communicator();
@@ -710,12 +734,15 @@ namespace psmpm
             {
               change =
                 -std::copysign(std::min(std::abs(vt), hold_capacity[w]), vt);
-              work += mass[wall.dof] * change * (vt + 0.5 * change);
+              if (wall_owned[w])
+                work += mass[wall.dof] * change * (vt + 0.5 * change);
               vt += change;
               held = true;
             }
           hold_change[w] = change;
         }
+      if (sum_over_ranks)
+        work = Utilities::MPI::sum(work, state.grid->get_communicator());
       accumulated_friction_work += work;
       if (held)
         hold_particles(state);

@@ -261,6 +261,12 @@ namespace psmpm
       /// Per wall DoF, the tangential velocity change of the hold in the
       /// last impose_velocity().
       std::vector<double> hold_change;
+      /// Per wall DoF, whether this rank owns it (its friction force and
+      /// work are counted there); buffers of the normal force's sum over
+      /// ranks.
+      std::vector<bool>   wall_owned;
+      std::vector<double> relevant_buffer, owned_buffer;
+      bool                sum_over_ranks = false;
       /// The last step's reactions (the prescribed work's extrapolation;
       /// empty before the first step).
       std::vector<double> previous_reactions;

@@ -264,6 +264,12 @@ namespace psmpm
       {
         return cells_exchange;
       }
+      /// The halo exchanges of arrays in local relevant numbering.
+      const GhostExchange &
+      ghost_exchange() const
+      {
+        return exchange;
+      }
 
       const SolveStatistics &
       statistics() const
