@@ -7,11 +7,13 @@
 
 #include <psmpm/app/application.h>
 #include <psmpm/app/output_directory.h>
+#include <psmpm/app/parameter_file.h>
 #include <psmpm/app/run_limits.h>
 #include <psmpm/base/checked_file.h>
 #include <psmpm/base/cpu_time.h>
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
+#include <psmpm/basis/space.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/simulator.h>
@@ -23,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 namespace psmpm
@@ -203,6 +206,7 @@ end
         prm.enter_subsection("Initial conditions");
         const std::string constants = prm.get("Function constants");
         prm.leave_subsection();
+        std::set<std::string> names;
         for (const auto &c : Utilities::split_string_list(constants, ','))
           {
             const auto kv = Utilities::split_string_list(c, '=');
@@ -223,6 +227,31 @@ end
                         ExcMessage("Initial conditions/Function constants = '" +
                                    constants + "': the value of " + kv[0] +
                                    ", '" + kv[1] + "', is not a number."));
+            // muParser's names: a letter or _, then letters, digits, _;
+            // the variables x, y, z and t cannot be constants (muParser
+            // throws an exception deal.II does not catch).
+            bool identifier =
+              std::isalpha(static_cast<unsigned char>(kv[0][0])) ||
+              kv[0][0] == '_';
+            for (const char ch : kv[0])
+              identifier =
+                identifier &&
+                (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
+            AssertThrow(identifier,
+                        ExcMessage("Initial conditions/Function constants = '" +
+                                   constants + "': '" + kv[0] +
+                                   "' is not a name (a letter, then letters, "
+                                   "digits or _)."));
+            AssertThrow(kv[0] != "x" && kv[0] != "y" && kv[0] != "z" &&
+                          kv[0] != "t",
+                        ExcMessage("Initial conditions/Function constants = '" +
+                                   constants + "': '" + kv[0] +
+                                   "' is a variable of the expressions (x, "
+                                   "y, z, t), not a constant."));
+            AssertThrow(names.insert(kv[0]).second,
+                        ExcMessage("Initial conditions/Function constants = '" +
+                                   constants + "': " + kv[0] +
+                                   " is given twice."));
           }
       }
 
@@ -354,6 +383,13 @@ end
       const auto path =
         Utilities::split_string_list(assignment.substr(0, eq), '/');
       const auto value = Utilities::trim(assignment.substr(eq + 1));
+      bool       names = !path.empty();
+      for (const auto &p : path)
+        names = names && !p.empty();
+      AssertThrow(names,
+                  ExcMessage("--set '" + assignment +
+                             "': expected Subsection/Entry=value (an empty "
+                             "subsection or entry name)."));
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.enter_subsection(path[i]);
       try
@@ -475,9 +511,7 @@ end
             prm.parse_input_from_string(default_scene, "default scene");
           else
             {
-              AssertThrow(std::filesystem::is_regular_file(cl.prm_file),
-                          ExcMessage("cannot open parameter file '" +
-                                     cl.prm_file + "'."));
+              check_parameter_file(cl.prm_file);
               prm.parse_input(cl.prm_file);
             }
           for (const auto &o : cl.overrides)
@@ -545,6 +579,13 @@ end
                           ExcMessage("Mesh/Distribution = distributed: "
                                      "Problem = l2 projection runs on a "
                                      "serial mesh (use replicated)."));
+              AssertThrow(
+                Basis::create_space<2>(basis)->dof_layout().reference_cell() ==
+                  ReferenceCells::Triangle,
+                ExcMessage("Basis/Type = " + basis +
+                           ": Problem = l2 projection runs on "
+                           "triangles only (a basis of "
+                           "triangles: linear or powell-sabin)."));
               projection.check_scene(mesh, basis);
             }
         }
@@ -561,6 +602,16 @@ end
           if (root)
             std::cerr << "psmpm: error in " << where << ": " << message_of(e)
                       << "\n";
+          return bad_input;
+        }
+      catch (...)
+        {
+          // muParser's exceptions are not std::exceptions.
+          if (root)
+            std::cerr << "psmpm: error in " << where
+                      << ": an expression or its constants could not be "
+                         "parsed (Initial conditions/Function constants, "
+                         "Velocity, Stress function).\n";
           return bad_input;
         }
       if (cl.validate)

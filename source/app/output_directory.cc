@@ -83,10 +83,22 @@ namespace psmpm
             if (errno != EEXIST)
               return "cannot create the lock file " + file + " (" +
                      std::strerror(errno) + ")";
+            // Reading a FIFO would wait forever, a device without end.
+            std::error_code ec;
+            if (!fs::is_regular_file(fs::symlink_status(file, ec)))
+              return "the lock file " + file +
+                     " is not a regular file; remove it if no psmpm run "
+                     "writes into '" +
+                     directory + "'.";
             std::ifstream in(file);
             long          pid = 0;
             std::string   host;
             in >> pid >> host;
+            if (!in || pid <= 0 || host.empty())
+              return "the lock file " + file +
+                     " does not name a process and host (it is garbled or "
+                     "empty); remove it if no psmpm run writes into '" +
+                     directory + "'.";
             const bool dead = pid > 0 && host == host_name() &&
                               ::kill(static_cast<pid_t>(pid), 0) != 0 &&
                               errno == ESRCH;
@@ -98,7 +110,6 @@ namespace psmpm
                      "); wait for it to end, choose another Output "
                      "directory, or remove the lock file if that run is "
                      "gone.";
-            std::error_code ec;
             fs::remove(file, ec); // stale: the process is gone
           }
         return "cannot take the lock file " + file;
@@ -130,6 +141,13 @@ namespace psmpm
             {
               check_name(directory);
               std::error_code ec;
+              AssertThrow(!resume || fs::is_directory(directory, ec),
+                          ExcMessage("--resume: no checkpoint "
+                                     "(checkpoint-<step>.h5) in the output "
+                                     "directory '" +
+                                     directory +
+                                     "': it does not exist (Output "
+                                     "directory)."));
               fs::create_directories(directory, ec);
               if (ec || !fs::is_directory(directory))
                 error = "Output directory = " + directory +
@@ -144,20 +162,42 @@ namespace psmpm
                   else
                     {
                       lock_file = file;
+                      // A FIFO where psmpm writes a file would block the
+                      // run (a device or a directory fails the write: exit
+                      // code 8).
                       for (const auto &entry :
                            fs::directory_iterator(directory, ec))
                         {
                           const std::string name =
                             entry.path().filename().string();
-                          if (entry.is_regular_file() &&
+                          const auto st = fs::status(entry.path(), ec);
+                          if (name != lock_name && written_by_psmpm(name) &&
+                              (fs::is_fifo(st) || fs::is_socket(st)))
+                            {
+                              error = "Output directory = " + directory + ": " +
+                                      name +
+                                      " is a FIFO or socket where psmpm "
+                                      "writes a file (it would wait on it); "
+                                      "remove it.";
+                              break;
+                            }
+                        }
+                      for (const auto &entry :
+                           fs::directory_iterator(directory, ec))
+                        {
+                          const std::string name =
+                            entry.path().filename().string();
+                          if (error.empty() && entry.is_regular_file() &&
                               (resume ? is_temporary(name) :
                                         written_by_psmpm(name)))
                             fs::remove(entry.path(), ec);
                         }
                       // Can a file be created in it at all?
                       const std::string probe = directory + "/log.txt";
-                      std::ofstream     test(probe, std::ios::app);
-                      if (!test.is_open())
+                      std::ofstream     test;
+                      if (error.empty())
+                        test.open(probe, std::ios::app);
+                      if (error.empty() && !test.is_open())
                         error = "Output directory = " + directory +
                                 ": cannot create files in it (" +
                                 std::strerror(errno) + ").";

@@ -275,6 +275,7 @@ namespace psmpm
     const auto fail = [&name](const std::string &what) {
       throw ExcWriteFailed("cannot write " + name + ": " + what);
     };
+    inject_write_failure(target.empty() ? file : target);
     {
       Handle f(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
                H5Fclose);

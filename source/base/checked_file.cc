@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -20,8 +21,23 @@ namespace psmpm
   } // namespace
 
   void
+  inject_write_failure(const std::string &file)
+  {
+    static const char *at    = std::getenv("PSMPM_FAIL_WRITE_AT");
+    static const char *match = std::getenv("PSMPM_FAIL_WRITE_MATCH");
+    static long        count = 0;
+    if (at == nullptr ||
+        (match != nullptr && file.find(match) == std::string::npos))
+      return;
+    if (++count == std::atol(at))
+      throw ExcWriteFailed("cannot write " + file + ": " +
+                           std::strerror(ENOSPC) + " (PSMPM_FAIL_WRITE_AT)");
+  }
+
+  void
   check_written(std::ostream &out, const std::string &file)
   {
+    inject_write_failure(file);
     // A stream that failed earlier keeps the errno of its failed write.
     if (!out.good())
       throw ExcWriteFailed("cannot write " + file + ": " + reason(errno));

@@ -120,15 +120,14 @@ namespace psmpm
                                  "positive, got " +
                                  std::to_string(length) + " and " +
                                  std::to_string(height) + "."));
+
           if (type == Type::gmsh)
             {
               AssertThrow(!file.empty(),
                           ExcMessage("Mesh/File must name a .msh file when "
                                      "Mesh/Type = gmsh."));
-              std::ifstream in(file);
-              AssertThrow(in.good(),
-                          ExcMessage("Mesh/File = " + file +
-                                     ": cannot open the mesh file."));
+              // Refused here, before anything opens it (a FIFO blocks).
+              check_msh(file, "Mesh/File = " + file);
             }
         }
     }
@@ -137,6 +136,26 @@ namespace psmpm
     void
     MeshGenerator<dim>::create(Triangulation<dim> &tria) const
     {
+      // Blocks far from square make slivers whose geometry is round-off
+      // (non-finite results, or a refinement that never ends); coordinates
+      // near the double range overflow in areas. Checked here, after the
+      // run limits (a scene of millions of blocks is refused by those).
+      if (dim == 2 && type != Type::gmsh)
+        {
+          const double       hx = length / blocks_x, hy = height / blocks_y;
+          std::ostringstream s;
+          s << "Geometry/Length = " << length
+            << ", Geometry/Height = " << height
+            << " with Mesh/Blocks x = " << blocks_x
+            << ", Mesh/Blocks y = " << blocks_y;
+          AssertThrow(length <= 1e12 && height <= 1e12,
+                      ExcMessage(s.str() +
+                                 ": the domain is larger than 1e12 m."));
+          AssertThrow(
+            std::max(hx / hy, hy / hx) <= 1e4,
+            ExcMessage(s.str() + ": blocks with sides in a ratio above 1e4 (" +
+                       std::to_string(hx) + " x " + std::to_string(hy) + ")."));
+        }
       if constexpr (dim == 1)
         {
           const std::vector<unsigned int> repetitions{blocks_x};
@@ -353,6 +372,7 @@ namespace psmpm
     MeshGenerator<dim>::read_gmsh(Triangulation<2>  &tria,
                                   const std::string &filename)
     {
+      check_msh(filename, "Mesh/File = " + filename);
       std::ifstream in(filename);
       AssertThrow(in.good(),
                   ExcMessage("Mesh/File = " + filename +

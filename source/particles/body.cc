@@ -384,9 +384,22 @@ namespace psmpm
           const std::string name = body.name();
           prm.enter_subsection("Body " + std::to_string(b));
           const std::string shape   = prm.get("Shape");
-          const auto        numbers = [&prm](const std::string &entry) {
-            return Utilities::string_to_double(
-              Utilities::split_string_list(prm.get(entry)));
+          const auto        numbers = [&prm, &name](const std::string &entry) {
+            // The pattern takes numbers string_to_double refuses
+            // (subnormals such as 4.9e-324).
+            try
+              {
+                return Utilities::string_to_double(
+                  Utilities::split_string_list(prm.get(entry)));
+              }
+            catch (const std::exception &)
+              {
+                AssertThrow(false,
+                            ExcMessage(name + "/" + entry + " = '" +
+                                       prm.get(entry) +
+                                       "': not a list of numbers."));
+              }
+            return std::vector<double>();
           };
           if (shape == "rectangle")
             {

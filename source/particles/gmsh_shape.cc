@@ -50,7 +50,8 @@ namespace psmpm
                      const std::string              &entry)
     {
       const std::string where = entry + "/File = " + file;
-      std::ifstream     in(file);
+      Mesh::check_msh(file, where);
+      std::ifstream in(file);
       AssertThrow(in.good(),
                   ExcMessage(where + ": cannot open the geometry file."));
       {

@@ -192,8 +192,18 @@ namespace psmpm
       per_block_x = prm.get_integer("Per block x");
       per_block_y = prm.get_integer("Per block y");
       per_cell    = prm.get_integer("Per cell");
-      region      = Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Region")));
+      try
+        {
+          region = Utilities::string_to_double(
+            Utilities::split_string_list(prm.get("Region")));
+        }
+      catch (const std::exception &)
+        {
+          // The pattern takes subnormals string_to_double refuses.
+          AssertThrow(false,
+                      ExcMessage("Particles/Region = '" + prm.get("Region") +
+                                 "': not a list of numbers."));
+        }
       max_particles = prm.get_double("Maximum number");
       prm.leave_subsection();
       if constexpr (dim == 1)

@@ -25,6 +25,17 @@ namespace psmpm
   check_written(std::ostream &out, const std::string &file);
 
   /**
+   * Disk full on demand, for tests: with the environment variable
+   * PSMPM_FAIL_WRITE_AT=n, the n-th checked write of this process (each
+   * call of check_written() and each HDF5 checkpoint write counts) of a
+   * file whose name contains PSMPM_FAIL_WRITE_MATCH (every file if unset)
+   * throws ExcWriteFailed "cannot write <file>: No space left on device
+   * (PSMPM_FAIL_WRITE_AT)". Without the variable: nothing.
+   */
+  void
+  inject_write_failure(const std::string &file);
+
+  /**
    * Write @p file completely or not at all: @p write fills "<file>.tmp",
    * which is checked, closed and renamed to @p file. A reader sees the
    * old file or the new one, never half of one. Throws ExcWriteFailed.

@@ -34,6 +34,19 @@ namespace psmpm
     read_physical_names(std::istream &in);
 
     /**
+     * Refuse a Gmsh file @p file that psmpm cannot read safely, before
+     * anything else reads it: not a regular file (a FIFO or a device would
+     * block or never end), no $MeshFormat of version 2.x or 4.x in ASCII
+     * with 8-byte data, or a missing section end. Format 2 files are
+     * checked through: node counts as given, finite coordinates, each
+     * node id once (deal.II would let a later node of the same id win),
+     * every element's nodes defined, element types with known node counts.
+     * Throws ExcMessage "<where>: ..." (@p where: "Mesh/File = x.msh").
+     */
+    void
+    check_msh(const std::string &file, const std::string &where);
+
+    /**
      * The cells of the .msh file @p in (from its start) into @p tria with
      * deal.II's GridIn (cell material ids: the physical tags). A file
      * GridIn cannot read throws ExcMessage "<where>: not a readable Gmsh
