@@ -64,6 +64,21 @@ namespace psmpm
                      "': must be automatic or a number >= 0."));
         return beta;
       }
+
+      /// Preconditioner = pmg: the hierarchy's share of Mass matrix.
+      template <int dim>
+      typename PMultigridHierarchy<dim>::Parameters
+      multigrid_parameters(const std::string &coarse,
+                           const std::string &smoother,
+                           const unsigned int smoothing_steps)
+      {
+        typename PMultigridHierarchy<dim>::Parameters p;
+        p.coarse               = coarse;
+        p.cycle.smoother       = smoother;
+        p.cycle.pre_smoothing  = smoothing_steps;
+        p.cycle.post_smoothing = smoothing_steps;
+        return p;
+      }
     } // namespace
 
     template <int dim>
@@ -255,6 +270,9 @@ namespace psmpm
       , space(space)
       , dof_handler(dof_handler)
       , comm(comm)
+      , pmg(multigrid_parameters<dim>(parameters.multigrid_coarse,
+                                      parameters.multigrid_smoother,
+                                      parameters.multigrid_smoothing_steps))
     {
     }
 
@@ -343,306 +361,9 @@ namespace psmpm
       else
         cells.mass.clear();
 
-      pmg_prolongation.clear();
-      for (unsigned int d = 0; d < dim; ++d)
-        pmg[d].reset();
+      pmg.clear();
       if (parameters.preconditioner == "pmg")
-        {
-          // The coarse level is P1 on the same triangles, whose affine
-          // pieces the Powell-Sabin space reproduces through its control
-          // points; other spaces have no such pair here.
-          AssertThrow(space.name() == "powell-sabin",
-                      ExcMessage("Mass matrix/Preconditioner = pmg: needs "
-                                 "Basis/Type = powell-sabin (its coarse "
-                                 "level is P1 on the same triangulation), "
-                                 "not " +
-                                 space.name() + "; use jacobi or amg."));
-          AssertThrow(Utilities::MPI::n_mpi_processes(comm) == 1,
-                      ExcMessage(
-                        "Mass matrix/Preconditioner = pmg: runs on one "
-                        "MPI process only (its levels are serial deal.II "
-                        "matrices), this run has " +
-                        std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
-                        "; use jacobi or amg."));
-          if (uses_matrix())
-            {
-              build_multigrid_prolongation();
-              pmg_generation = numbers::invalid_unsigned_int;
-            }
-        }
-    }
-
-    template <int dim>
-    void
-    GridSystem<dim>::build_multigrid_prolongation()
-    {
-      // One process: the local relevant numbering is the global one.
-      const auto &tria   = dof_handler.get_triangulation();
-      const auto  points = space.control_points(dof_handler);
-      std::vector<typename Triangulation<dim>::active_cell_iterator> cell_of(
-        n_cells);
-      for (const auto &cell : tria.active_cell_iterators())
-        cell_of[cell->active_cell_index()] = cell;
-
-      // Row i: the vertices of one cell around DoF i's vertex and the
-      // barycentric coordinates of i's control point in it. Any such cell
-      // gives the exact coefficients f(X_i) of an affine f; the cell that
-      // contains X_i (largest smallest coordinate) gives the hat
-      // function's own piece there, and the nearest one where X_i lies
-      // outside the mesh (control triangles of boundary vertices).
-      const unsigned int                             n = relevant_global.size();
-      std::vector<std::array<unsigned int, dim + 1>> row_vertices(n);
-      std::vector<std::array<double, dim + 1>>       row_weights(n);
-      DynamicSparsityPattern                         dsp(n, tria.n_vertices());
-      for (unsigned int v = 0; v < vertices.dofs.size(); ++v)
-        for (const unsigned int i : vertices.dofs[v])
-          {
-            double best = -std::numeric_limits<double>::max();
-            for (const unsigned int c : vertices.cells[v])
-              {
-                const auto    &cell = cell_of[c];
-                Tensor<2, dim> J;
-                for (unsigned int k = 0; k < dim; ++k)
-                  for (unsigned int r = 0; r < dim; ++r)
-                    J[r][k] = cell->vertex(k + 1)[r] - cell->vertex(0)[r];
-                const Tensor<1, dim> l =
-                  invert(J) * (points[relevant_global[i]] - cell->vertex(0));
-                std::array<double, dim + 1> lambda;
-                lambda[0] = 1;
-                for (unsigned int k = 0; k < dim; ++k)
-                  lambda[k + 1] = l[k], lambda[0] -= l[k];
-                const double smallest =
-                  *std::min_element(lambda.begin(), lambda.end());
-                if (smallest > best)
-                  {
-                    best           = smallest;
-                    row_weights[i] = lambda;
-                    for (unsigned int k = 0; k <= dim; ++k)
-                      row_vertices[i][k] = cell->vertex_index(k);
-                  }
-              }
-            for (unsigned int k = 0; k <= dim; ++k)
-              dsp.add(i, row_vertices[i][k]);
-          }
-      // The cells' own pieces (coarse = particles) and the P1 pattern.
-      const unsigned int n_dofs = dofs_per_cell;
-      pmg_cell_weights.assign(n_cells * n_dofs * (dim + 1), 0.);
-      pmg_cell_vertices.assign(n_cells * (dim + 1), 0);
-      DynamicSparsityPattern p1(tria.n_vertices(), tria.n_vertices());
-      for (const unsigned int c : owned_cell_indices)
-        {
-          const auto    &cell = cell_of[c];
-          Tensor<2, dim> J;
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int r = 0; r < dim; ++r)
-              J[r][k] = cell->vertex(k + 1)[r] - cell->vertex(0)[r];
-          const Tensor<2, dim> Jinv = invert(J);
-          for (unsigned int k = 0; k < n_dofs; ++k)
-            {
-              const unsigned int   i = cell_dof_indices[c * n_dofs + k];
-              const Tensor<1, dim> l =
-                Jinv * (points[relevant_global[i]] - cell->vertex(0));
-              double *w = &pmg_cell_weights[(c * n_dofs + k) * (dim + 1)];
-              w[0]      = 1;
-              for (unsigned int q = 0; q < dim; ++q)
-                w[q + 1] = l[q], w[0] -= l[q];
-            }
-          for (const unsigned int a : cell->vertex_indices())
-            {
-              pmg_cell_vertices[c * (dim + 1) + a] = cell->vertex_index(a);
-              for (const unsigned int b : cell->vertex_indices())
-                p1.add(cell->vertex_index(a), cell->vertex_index(b));
-            }
-        }
-      for (unsigned int v = 0; v < tria.n_vertices(); ++v)
-        p1.add(v, v);
-      pmg_p1_pattern.copy_from(p1);
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          // A P1 vertex is fixed where the space fixes any of its
-          // functions (Powell-Sabin: value and tangential derivative on a
-          // fixed edge), as P1's Dirichlet constraints fix its vertices.
-          pmg_fixed_vertex[d].assign(tria.n_vertices(), 0);
-          for (unsigned int v = 0; v < vertices.dofs.size(); ++v)
-            for (const unsigned int i : vertices.dofs[v])
-              if (dirichlet[d].is_constrained(relevant_global[i]))
-                pmg_fixed_vertex[d][v] = 1;
-        }
-
-      pmg_prolongation_pattern.copy_from(dsp);
-      pmg_prolongation.reinit(pmg_prolongation_pattern);
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int k = 0; k <= dim; ++k)
-          pmg_prolongation.set(i, row_vertices[i][k], row_weights[i][k]);
-      for (unsigned int d = 0; d < dim; ++d)
-        pmg_transfer[d].reinit(pmg_prolongation_pattern);
-    }
-
-    template <int dim>
-    void
-    GridSystem<dim>::assemble_multigrid(const unsigned int d)
-    {
-      const Epetra_CrsMatrix &A = matrix[d].trilinos_matrix();
-      const unsigned int      n = relevant_global.size();
-      int                    *offsets, *columns;
-      double                 *entries;
-      const_cast<Epetra_CrsMatrix &>(A).ExtractCrsDataPointers(offsets,
-                                                               columns,
-                                                               entries);
-      if (pmg_generation != generation)
-        {
-          // The pattern of the copy and where each of its entries lies in
-          // the Epetra value array; all components share the sparsity.
-          DynamicSparsityPattern dsp(n, n);
-          for (unsigned int r = 0; r < n; ++r)
-            for (int p = offsets[r]; p < offsets[r + 1]; ++p)
-              dsp.add(A.RowMap().GID(r), A.ColMap().GID(columns[p]));
-          pmg_fine_pattern.copy_from(dsp);
-          pmg_fine_slots.assign(pmg_fine_pattern.n_nonzero_elements(), -1);
-          for (unsigned int r = 0; r < n; ++r)
-            for (int p = offsets[r]; p < offsets[r + 1]; ++p)
-              pmg_fine_slots[pmg_fine_pattern(A.RowMap().GID(r),
-                                              A.ColMap().GID(columns[p]))] = p;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              pmg_fine[c].reinit(pmg_fine_pattern);
-              pmg_rebuild[c] = true;
-            }
-          pmg_generation = generation;
-        }
-      // The entries of a SparseMatrix, row by row, are its value array in
-      // order.
-      unsigned int k = 0;
-      for (auto e = pmg_fine[d].begin(); e != pmg_fine[d].end(); ++e, ++k)
-        e->value() = pmg_fine_slots[k] < 0 ? 0. : entries[pmg_fine_slots[k]];
-      // A fixed DoF whose support holds no particle has an empty row and
-      // column: add_block() puts the cell's diagonal (or the cell's
-      // average one), zero in an empty cell, on a fixed DoF's diagonal, and
-      // finish_assembly() gives a unit diagonal to free DoFs only. Jacobi
-      // (a zero inverse) and block Jacobi (masked rows) keep such a DoF at
-      // its zero guess, but both smoothers divide by the diagonal: one
-      // such row made the first V-cycle, hence CG's first residual, NaN.
-      // With a unit diagonal the DoF stays at zero (right-hand side and
-      // guess are zero there, its transfer row is zero), so CG's iterates
-      // on the other DoFs are unchanged. The matrix is symmetric positive
-      // semidefinite: a zero diagonal means a zero row.
-      for (unsigned int i = 0; i < n; ++i)
-        if (pmg_fine[d].diag_element(i) == 0)
-          pmg_fine[d].diag_element(i) = 1;
-
-      // P_d: constrained DoFs take no correction (their rows and columns
-      // hold only the diagonal, their right-hand side is zero); with the
-      // particle coarse matrix, fixed P1 vertices give none either.
-      const bool particles = parameters.multigrid_coarse == "particles";
-      pmg_transfer[d].copy_from(pmg_prolongation);
-      for (unsigned int i = 0; i < n; ++i)
-        for (auto e = pmg_transfer[d].begin(i); e != pmg_transfer[d].end(i);
-             ++e)
-          if (constrained[d][i] ||
-              (particles && pmg_fixed_vertex[d][e->column()]))
-            e->value() = 0;
-
-      if (particles)
-        {
-          // sum over cells of P_K^T M_K P_K: M_K holds sum_p m_p N_k N_l
-          // and the hat of vertex a is sum_k P_K(k, a) N_k on cell K, so
-          // this is sum_p m_p phi_a phi_b, the P1 particle mass, with no
-          // particle loop and no sparse product.
-          if (pmg_rebuild[d])
-            pmg_coarse[d].reinit(pmg_p1_pattern);
-          else
-            pmg_coarse[d] = 0;
-          const unsigned int                m = dofs_per_cell;
-          std::array<unsigned int, dim + 1> v;
-          double                            MP[64 * (dim + 1)];
-          AssertThrow(m <= 64, ExcInternalError());
-          for (const unsigned int c : owned_cell_indices)
-            {
-              for (unsigned int a = 0; a <= dim; ++a)
-                v[a] = pmg_cell_vertices[c * (dim + 1) + a];
-              const double *M = &cells.mass[c * m * m];
-              const double *W = &pmg_cell_weights[c * m * (dim + 1)];
-              for (unsigned int k = 0; k < m; ++k)
-                for (unsigned int a = 0; a <= dim; ++a)
-                  {
-                    double sum = 0;
-                    for (unsigned int l = 0; l < m; ++l)
-                      sum += M[k * m + l] * W[l * (dim + 1) + a];
-                    MP[k * (dim + 1) + a] = sum;
-                  }
-              for (unsigned int a = 0; a <= dim; ++a)
-                for (unsigned int b = 0; b <= dim; ++b)
-                  {
-                    if (pmg_fixed_vertex[d][v[a]] || pmg_fixed_vertex[d][v[b]])
-                      continue;
-                    double sum = 0;
-                    for (unsigned int k = 0; k < m; ++k)
-                      sum += W[k * (dim + 1) + a] * MP[k * (dim + 1) + b];
-                    pmg_coarse[d].add(v[a], v[b], sum);
-                  }
-            }
-        }
-      else
-        {
-          // Galerkin coarse matrix P_d^T M_d P_d; the products' patterns
-          // are computed once per sparsity generation.
-          if (pmg_rebuild[d])
-            {
-              pmg_product[d].reinit(pmg_product_pattern[d]);
-              pmg_coarse[d].reinit(pmg_coarse_pattern[d]);
-            }
-          else
-            {
-              pmg_product[d] = 0;
-              pmg_coarse[d]  = 0;
-            }
-          pmg_fine[d].mmult(pmg_product[d],
-                            pmg_transfer[d],
-                            Vector<double>(),
-                            pmg_rebuild[d]);
-          pmg_transfer[d].Tmmult(pmg_coarse[d],
-                                 pmg_product[d],
-                                 Vector<double>(),
-                                 pmg_rebuild[d]);
-        }
-      // A vertex all of whose DoFs are fixed (with the particle coarse
-      // matrix also one whose hat holds no particle) has an empty row.
-      for (unsigned int v = 0; v < pmg_coarse[d].m(); ++v)
-        if (pmg_coarse[d].diag_element(v) == 0)
-          pmg_coarse[d].diag_element(v) = 1;
-      // A particle layout that leaves the P1 level rank deficient (two
-      // particles in a bar of 24 DoFs) makes UMFPACK fail. That is the
-      // layout's fault, not a bug: no cycle this step, and
-      // solve_consistent() reports the solver's failure.
-      try
-        {
-          pmg_coarse_direct[d].initialize(pmg_coarse[d]);
-        }
-      catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
-        {
-          pmg[d].reset();
-          return;
-        }
-
-      if (pmg_rebuild[d] || !pmg[d])
-        {
-          PMultigrid::Parameters p;
-          p.smoother       = parameters.multigrid_smoother;
-          p.pre_smoothing  = parameters.multigrid_smoothing_steps;
-          p.post_smoothing = parameters.multigrid_smoothing_steps;
-          pmg[d]           = std::make_unique<PMultigrid>(
-            p,
-            std::vector<const SparseMatrix<double> *>{&pmg_coarse[d],
-                                                                &pmg_fine[d]},
-            std::vector<const SparseMatrix<double> *>{nullptr,
-                                                                &pmg_transfer[d]},
-            std::vector<const SparseMatrix<double> *>{nullptr, nullptr});
-          pmg[d]->set_coarse_solver(
-            [this, d](Vector<double> &x, const Vector<double> &b) {
-              pmg_coarse_direct[d].vmult(x, b);
-            });
-          pmg_rebuild[d] = false;
-        }
+        pmg.reinit(*this);
     }
 
     template <int dim>
@@ -805,20 +526,6 @@ namespace psmpm
 
     namespace
     {
-      /// One V-cycle from a zero guess as a CG preconditioner (a fixed
-      /// symmetric operator: symmetric smoothing, R = P^T, exact coarse
-      /// solve).
-      struct VCyclePreconditioner
-      {
-        const PMultigrid &multigrid;
-        void
-        vmult(Vector<double> &dst, const Vector<double> &src) const
-        {
-          dst = 0;
-          multigrid.vcycle(1, src, dst);
-        }
-      };
-
       /// Value-array positions @p slots (n x n, row-major) of the entries
       /// of a dense block over the local relevant DoFs @p dofs, in a
       /// FillComplete'd Epetra matrix's CRS arrays @p offsets and
@@ -1444,7 +1151,7 @@ namespace psmpm
           if (parameters.preconditioner == "amg")
             amg[d].initialize(matrix[d]);
           else if (parameters.preconditioner == "pmg")
-            assemble_multigrid(d);
+            pmg.assemble(*this, d, constrained[d]);
           else if (vertex_blocks(parameters.preconditioner, space))
             block_jacobi[d].initialize(matrix[d],
                                        space.dofs_per_vertex(),
@@ -1520,29 +1227,7 @@ namespace psmpm
       if (parameters.preconditioner == "amg")
         cg.solve(matrix[d], x, rhs, amg[d]);
       else if (parameters.preconditioner == "pmg")
-        {
-          if (!pmg[d])
-            throw SolverFailure(
-              "the P1 coarse matrix of the p-multigrid preconditioner is "
-              "singular: the particles do not determine the P1 level (Mass "
-              "matrix/Preconditioner = pmg; block jacobi or more particles "
-              "per block)");
-          // CG on the serial copy that the cycle smooths (the same
-          // matrix), one V-cycle from zero per iteration.
-          pmg_rhs.reinit(rhs.locally_owned_size(), true);
-          pmg_solution.reinit(rhs.locally_owned_size(), true);
-          std::copy(rhs.begin(), rhs.end(), pmg_rhs.begin());
-          std::copy(x.begin(), x.end(), pmg_solution.begin());
-          SolverCG<Vector<double>> pmg_cg(control);
-          pmg_cg.connect_condition_number_slot([this](const double c) {
-            stats.condition_number = std::max(stats.condition_number, c);
-          });
-          pmg_cg.solve(pmg_fine[d],
-                       pmg_solution,
-                       pmg_rhs,
-                       VCyclePreconditioner{*pmg[d]});
-          std::copy(pmg_solution.begin(), pmg_solution.end(), x.begin());
-        }
+        pmg.solve(d, control, rhs, x, stats.condition_number);
       else if (vertex_blocks(parameters.preconditioner, space))
         cg.solve(matrix[d], x, rhs, block_jacobi[d]);
       else

@@ -209,7 +209,7 @@ main(int argc, char **argv)
     const Result           full_pmg =
       solve("pmg", "gauss-seidel", *space, dh, full, &grid);
     std::unique_ptr<Solver::GridSystem<2>> owner(grid);
-    const auto                            &P = grid->multigrid_prolongation();
+    const auto                            &P = grid->multigrid().prolongation();
     const auto                             points = space->control_points(dh);
     const auto f = [](const Point<2> &x) { return 1 + 2 * x[0] - 3 * x[1]; };
     Vector<double> coarse(tria.n_vertices()), fine(dh.n_dofs());
@@ -230,7 +230,7 @@ main(int argc, char **argv)
     double       asym = 0, scale = 0;
     for (unsigned int d = 0; d < 2; ++d)
       {
-        const auto &A = grid->multigrid_coarse_matrix(d);
+        const auto &A = grid->multigrid().coarse_matrix(d);
         for (auto e = A.begin(); e != A.end(); ++e)
           asym =
             std::max(asym, std::abs(e->value() - A(e->column(), e->row()))),

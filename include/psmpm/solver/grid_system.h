@@ -22,7 +22,7 @@
 #include <psmpm/solver/dense_cholesky.h>
 #include <psmpm/solver/ghost_exchange.h>
 #include <psmpm/solver/mass_strategy.h>
-#include <psmpm/solver/p_multigrid.h>
+#include <psmpm/solver/p_multigrid_hierarchy.h>
 #include <psmpm/solver/sampling_stabilization.h>
 #include <psmpm/solver/vertex_block_jacobi.h>
 
@@ -50,17 +50,18 @@ namespace psmpm
     class GridSystem
     {
     public:
-      struct Parameters
+      /// Subsection "Mass matrix": Type (from MassStrategyRegistry), the
+      /// solver's entries and the strategies' (MassStrategyParameters).
+      struct Parameters : MassStrategyParameters
       {
-        /// Subsection "Mass matrix": Type (from MassStrategyRegistry),
-        /// solver entries and the strategies' shared Threshold.
+        /// All entries of subsection "Mass matrix", the strategies' too.
         static void
         declare_parameters(ParameterHandler &prm);
         void
         parse_parameters(ParameterHandler &prm);
 
-        std::string  type           = "partially lumped";
-        double       tolerance      = 1e-12;
+        std::string type      = "partially lumped";
+        double      tolerance = 1e-12;
         /// Mass matrix/Step tolerance: a solve warm-started from the
         /// last step's field also ends once its residual has dropped by
         /// this factor from the guess' (0: off), for components with
@@ -68,19 +69,11 @@ namespace psmpm
         double       step_tolerance = 1e-6;
         unsigned int max_iterations = 1000;
         std::string  preconditioner = "block jacobi";
-        double       threshold      = 0.05;
         /// Serial systems with at most this many DoFs are solved by a
         /// dense Cholesky factorization instead of CG (0: never).
         unsigned int direct_size = 600;
         /// Mass matrix/Warm start: CG starts from the caller's field.
         bool warm_start = true;
-        /// Fictitious mass fraction alpha of the stabilised strategies
-        /// (Mass matrix/Stabilization).
-        double stabilization = 1;
-        /// beta of SamplingStabilization (Mass matrix/Sampling
-        /// stabilization; "automatic" is -1 here until the simulator
-        /// resolves it, 0: off).
-        double sampling_stabilization = -1;
         /// Preconditioner = pmg: smoother of the Powell-Sabin level
         /// ("gauss-seidel": forward sweeps before, backward after the
         /// coarse correction; "jacobi": damped Jacobi) and its sweeps
@@ -199,6 +192,12 @@ namespace psmpm
       uses_matrix() const
       {
         return mass_strategy->uses_matrix();
+      }
+      /// The entries of Mass matrix that strategies read.
+      const MassStrategyParameters &
+      strategy_parameters() const
+      {
+        return parameters;
       }
 
       CellArrays &
@@ -329,26 +328,12 @@ namespace psmpm
       {
         return matrix[d];
       }
-      /**
-       * Preconditioner = pmg (one process, Powell-Sabin): the prolongation
-       * P from the P1 space on the same triangulation (column: vertex
-       * index) to the space (row: DoF), P_iv = the affine piece of the hat
-       * function of v on a cell around DoF i's vertex, evaluated at DoF
-       * i's control point; P reproduces every affine function exactly.
-       * Empty otherwise.
-       */
-      const SparseMatrix<double> &
-      multigrid_prolongation() const
+      /// Preconditioner = pmg (one process, Powell-Sabin): the levels of
+      /// the p-multigrid, assembled with the matrices.
+      const PMultigridHierarchy<dim> &
+      multigrid() const
       {
-        return pmg_prolongation;
-      }
-      /// Preconditioner = pmg: the coarse (P1) matrix P_d^T M_d P_d of
-      /// component d after assemble_mass(), P_d = P with the rows of
-      /// constrained DoFs zero (unit diagonal where a vertex has none).
-      const SparseMatrix<double> &
-      multigrid_coarse_matrix(const unsigned int d) const
-      {
-        return pmg_coarse[d];
+        return pmg;
       }
       /// Lumped mass in local relevant numbering (after assemble_mass).
       const std::vector<double> &
@@ -485,12 +470,6 @@ namespace psmpm
       /// @p x holds the initial guess (owned entries).
       unsigned int
       solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
-      /// Preconditioner = pmg: P from the control points (reinit()).
-      void
-      build_multigrid_prolongation();
-      /// Preconditioner = pmg: the levels of component d from matrix[d].
-      void
-      assemble_multigrid(const unsigned int d);
 
       std::unique_ptr<MassStrategy<dim>>              mass_strategy;
       SamplingStabilization<dim>                      sampling;
@@ -523,34 +502,8 @@ namespace psmpm
       std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
       std::array<VertexBlockJacobi, dim>                    block_jacobi;
       std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
-      /// Preconditioner = pmg. Serial deal.II matrices, as PMultigrid
-      /// takes: the prolongation P (shared pattern) and per component P_d,
-      /// the copy of matrix[d] (pattern and value-array positions in
-      /// matrix[d] rebuilt when the sparsity generation changes), M_d P_d,
-      /// the coarse matrix, its factorisation and the cycle.
-      SparsityPattern                       pmg_prolongation_pattern;
-      SparseMatrix<double>                  pmg_prolongation;
-      std::array<SparseMatrix<double>, dim> pmg_transfer;
-      /// Per owned cell's DoF k the barycentric coordinates of its control
-      /// point in that cell (coarse = particles: the cell's P1 hat
-      /// functions in the cell's Powell-Sabin functions), the P1 pattern
-      /// and which vertices are fixed for component d.
-      std::vector<double>                          pmg_cell_weights;
-      std::vector<unsigned int>                    pmg_cell_vertices;
-      SparsityPattern                              pmg_p1_pattern;
-      std::array<std::vector<char>, dim>           pmg_fixed_vertex;
-      SparsityPattern                              pmg_fine_pattern;
-      std::vector<int>                             pmg_fine_slots;
-      unsigned int                                 pmg_generation = 0;
-      std::array<bool, dim>                        pmg_rebuild{};
-      std::array<SparseMatrix<double>, dim>        pmg_fine;
-      std::array<SparsityPattern, dim>             pmg_product_pattern;
-      std::array<SparseMatrix<double>, dim>        pmg_product;
-      std::array<SparsityPattern, dim>             pmg_coarse_pattern;
-      std::array<SparseMatrix<double>, dim>        pmg_coarse;
-      std::array<SparseDirectUMFPACK, dim>         pmg_coarse_direct;
-      std::array<std::unique_ptr<PMultigrid>, dim> pmg;
-      Vector<double>                               pmg_rhs, pmg_solution;
+      /// Preconditioner = pmg: the p-multigrid's levels and cycles.
+      PMultigridHierarchy<dim> pmg;
       /// Components solved together (components_together(), decided in
       /// every assemble_mass()): then matrix[0] is the unconstrained M and
       /// matrix[d > 0] is not assembled; per component the locally owned
@@ -559,7 +512,7 @@ namespace psmpm
       /// Per component, whether Dirichlet conditions fix every DoF on
       /// every rank (e.g. y of a bar between rollers): its solution is
       /// zero, and its matrix is neither assembled nor solved.
-      std::array<bool, dim>                  fully_fixed{};
+      std::array<bool, dim> fully_fixed{};
       /// Per component, whether no DoF is constrained on any rank (a free
       /// body): its solves keep Solver tolerance alone, so that momentum
       /// (and, with every component free, angular momentum) stays

@@ -21,6 +21,25 @@ namespace psmpm
     class GridSystem;
 
     /**
+     * The entries of subsection "Mass matrix" that strategies read
+     * (GridSystem::strategy_parameters()), so that a strategy does not
+     * depend on the solver's own entries.
+     */
+    struct MassStrategyParameters
+    {
+      /// Mass matrix/Threshold: the relative support below which a
+      /// function counts as poorly supported (also given to the factory).
+      double threshold = 0.05;
+      /// Fictitious mass fraction alpha of the stabilised strategies
+      /// (Mass matrix/Stabilization).
+      double stabilization = 1;
+      /// beta of SamplingStabilization (Mass matrix/Sampling
+      /// stabilization; "automatic" is -1 here until the simulator
+      /// resolves it, 0: off).
+      double sampling_stabilization = -1;
+    };
+
+    /**
      * How the grid's mass matrix is formed from the particle mass
      * (subsection "Mass matrix", entry "Type"). A strategy decides whether
      * a sparse matrix is built at all and may, once per step before

@@ -34,7 +34,7 @@ namespace psmpm
         bool
         prepare(GridSystem<dim> &grid, const std::vector<double> &) override
         {
-          const double alpha = grid.parameters.stabilization;
+          const double alpha = grid.strategy_parameters().stabilization;
           if (alpha == 0)
             return false;
           const unsigned int n = grid.dofs_per_cell;

@@ -149,7 +149,7 @@ namespace psmpm
         bool
         prepare(GridSystem<dim> &grid, const std::vector<double> &) override
         {
-          const double gamma = grid.parameters.stabilization;
+          const double gamma = grid.strategy_parameters().stabilization;
           if (gamma == 0)
             return false;
           if (faces.empty())
@@ -157,10 +157,11 @@ namespace psmpm
           // fill decides which cells hold particles, sampled (fill capped
           // by the particles' sampling of the linear fields, where
           // caps_fill()) the weights: both in one reduction.
-          const double        target = grid.parameters.sampling_stabilization;
-          std::vector<double> local  = cell_fill(grid, measure);
-          const unsigned int  n_c    = local.size();
-          const bool          cap    = caps_fill(grid, target);
+          const double target =
+            grid.strategy_parameters().sampling_stabilization;
+          std::vector<double> local = cell_fill(grid, measure);
+          const unsigned int  n_c   = local.size();
+          const bool          cap   = caps_fill(grid, target);
           if (cap)
             {
               local.resize(2 * n_c);
