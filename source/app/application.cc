@@ -8,24 +8,20 @@
 #include <psmpm/app/application.h>
 #include <psmpm/app/output_directory.h>
 #include <psmpm/app/parameter_file.h>
+#include <psmpm/app/problem.h>
 #include <psmpm/app/run_limits.h>
 #include <psmpm/base/checked_file.h>
 #include <psmpm/base/cpu_time.h>
-#include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
-#include <psmpm/basis/space.h>
 #include <psmpm/postprocess/summary.h>
 #include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/simulator.h>
-#include <psmpm/solver/l2_projection.h>
-#include <psmpm/solver/mass_matrix_study.h>
 
-#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <set>
+#include <optional>
 #include <sstream>
 
 namespace psmpm
@@ -198,63 +194,6 @@ end
         return strip_nested(e.what());
       }
 
-      /// Initial conditions/Function constants: name=value with a number
-      /// (the simulator would only say "Can't convert <abc> to a double").
-      void
-      check_function_constants(ParameterHandler &prm)
-      {
-        prm.enter_subsection("Initial conditions");
-        const std::string constants = prm.get("Function constants");
-        prm.leave_subsection();
-        std::set<std::string> names;
-        for (const auto &c : Utilities::split_string_list(constants, ','))
-          {
-            const auto kv = Utilities::split_string_list(c, '=');
-            AssertThrow(kv.size() == 2 && !kv[0].empty(),
-                        ExcMessage("Initial conditions/Function constants = '" +
-                                   constants + "': '" + c +
-                                   "' is not name=value."));
-            bool number = true;
-            try
-              {
-                Utilities::string_to_double(kv[1]);
-              }
-            catch (...)
-              {
-                number = false;
-              }
-            AssertThrow(number,
-                        ExcMessage("Initial conditions/Function constants = '" +
-                                   constants + "': the value of " + kv[0] +
-                                   ", '" + kv[1] + "', is not a number."));
-            // muParser's names: a letter or _, then letters, digits, _;
-            // the variables x, y, z and t cannot be constants (muParser
-            // throws an exception deal.II does not catch).
-            bool identifier =
-              std::isalpha(static_cast<unsigned char>(kv[0][0])) ||
-              kv[0][0] == '_';
-            for (const char ch : kv[0])
-              identifier =
-                identifier &&
-                (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
-            AssertThrow(identifier,
-                        ExcMessage("Initial conditions/Function constants = '" +
-                                   constants + "': '" + kv[0] +
-                                   "' is not a name (a letter, then letters, "
-                                   "digits or _)."));
-            AssertThrow(kv[0] != "x" && kv[0] != "y" && kv[0] != "z" &&
-                          kv[0] != "t",
-                        ExcMessage("Initial conditions/Function constants = '" +
-                                   constants + "': '" + kv[0] +
-                                   "' is a variable of the expressions (x, "
-                                   "y, z, t), not a constant."));
-            AssertThrow(names.insert(kv[0]).second,
-                        ExcMessage("Initial conditions/Function constants = '" +
-                                   constants + "': " + kv[0] +
-                                   " is given twice."));
-          }
-      }
-
       /// Relative mesh and body geometry files (entry File of the current
       /// subsection) are taken relative to the parameter file.
       void
@@ -286,32 +225,17 @@ end
         prm.leave_subsection();
       }
 
-      /// Deterministic results of each Problem for the scene tests: its
+      /// Deterministic results of a Problem for the scene tests: its
       /// sizes as they are, then its errors with 5 significant digits
       /// (those in the summary).
       void
-      print_test_output(const std::string          &problem,
-                        const Postprocess::Summary &summary,
-                        std::ostream               &out)
+      print_test_output(const Problem::TestOutputKeys &keys,
+                        const Postprocess::Summary    &summary,
+                        std::ostream                  &out)
       {
-        using Keys = std::vector<std::string>;
-        const Keys sizes =
-          problem == "mpm" ?
-            Keys{"steps", "n_dofs", "n_particles", "end_time"} :
-          problem == "mass matrix study" ? Keys{"n_rows",
-                                                "most_cg_iterations",
-                                                "most_pmg_vcycles",
-                                                "n_not_converged"} :
-                                           Keys{"n_dofs", "n_cells"};
-        const Keys errors =
-          problem == "mpm"               ? Keys{"errors.displacement_L2",
-                                  "errors.velocity_L2",
-                                  "errors.stress_L2"} :
-          problem == "mass matrix study" ? Keys{"largest_condition_number"} :
-                                           Keys{"errors.L2"};
-        for (const std::string &key : sizes)
+        for (const std::string &key : keys.sizes)
           out << key << " = " << summary.get_number(key) << "\n";
-        for (const std::string &key : errors)
+        for (const std::string &key : keys.errors)
           if (summary.has(key))
             {
               char buf[64];
@@ -441,27 +365,316 @@ end
                         "Print only machine-independent results (no timings) "
                         "to the screen, for scene tests.");
       prm.leave_subsection();
-      prm.declare_entry("Problem",
-                        "mpm",
-                        Patterns::Selection(
-                          "mpm|l2 projection|mass matrix study"),
-                        "mpm: material point simulation; l2 projection: "
-                        "project Projection/Function onto the basis; mass "
-                        "matrix study: condition numbers and CG and "
-                        "p-multigrid iterations of B-spline mass matrices "
-                        "(solver_study.tsv, doc/solver_study.md).");
-      prm.enter_subsection("Geometry");
-      prm.declare_entry("Dimension",
-                        "2",
-                        Patterns::Integer(1, 2),
-                        "1: a bar along x on [0, Length] (Mesh/Blocks x "
-                        "elements, P1); 2: triangles in the plane.");
-      prm.leave_subsection();
-      Simulator::Simulator<2>::declare_parameters(prm);
-      Solver::L2Projection::declare_parameters(prm);
-      Solver::MassMatrixStudy::declare_parameters(prm);
+      declare_problem_parameters(prm);
       RunLimits::declare_parameters(prm);
     }
+
+    namespace
+    {
+      /// What run() learns from the command line and the scene before
+      /// anything is written.
+      struct Scene
+      {
+        CommandLine cl;
+        /// Where the input comes from, for the messages.
+        std::string    where = "the command line";
+        std::string    dir;
+        OutputSettings output;
+        /// Set up and checked; null until the whole input is valid.
+        std::unique_ptr<Problem> problem;
+      };
+
+      /// --help, --version and --print-parameters without a scene need no
+      /// scene: their exit code, or none if the command line asks for a
+      /// run.
+      std::optional<int>
+      answer_without_scene(const CommandLine      &cl,
+                           const ParameterHandler &prm,
+                           const bool              root)
+      {
+        if (cl.help)
+          {
+            if (root)
+              std::cout << usage;
+            return success;
+          }
+        if (cl.version)
+          {
+            if (root)
+              std::cout << "psmpm " << version() << "\n";
+            return success;
+          }
+        // Without a scene: every entry with its default; with a scene
+        // (and --set): the scene's values, documentation included.
+        if (cl.print_parameters && cl.prm_file.empty() && cl.overrides.empty())
+          {
+            if (root)
+              prm.print_parameters(std::cout, ParameterHandler::PRM);
+            return success;
+          }
+        return std::nullopt;
+      }
+
+      /// The scene file (or the embedded default scene), then --set.
+      void
+      read_parameters(const CommandLine &cl, ParameterHandler &prm)
+      {
+        if (cl.prm_file.empty())
+          prm.parse_input_from_string(default_scene, "default scene");
+        else
+          {
+            check_parameter_file(cl.prm_file);
+            prm.parse_input(cl.prm_file);
+          }
+        for (const auto &o : cl.overrides)
+          apply_override(prm, o);
+      }
+
+      /// The entries every Problem shares, then the Problem, set up: all
+      /// checks of the input that can fail end here, before the output
+      /// directory is touched.
+      void
+      set_up_scene(ParameterHandler &prm, MPI_Comm comm, Scene &scene)
+      {
+        resolve_mesh_file(prm, scene.cl.prm_file);
+        RunLimits limits;
+        limits.parse_parameters(prm);
+        scene.dir = prm.get("Output directory");
+        OutputDirectory::check_name(scene.dir);
+        prm.enter_subsection("Output");
+        scene.output.test_output       = prm.get_bool("Test output");
+        scene.output.time_interval     = prm.get_double("Time interval");
+        scene.output.progress_interval = prm.get_double("Progress interval");
+        prm.leave_subsection();
+        scene.problem = create_problem(prm.get("Problem"), comm);
+        scene.problem->set_up(prm, limits, scene.output);
+      }
+
+      /**
+       * The message and exit code (bad_input) of an exception thrown while
+       * the input is read and checked; called from a catch block, it
+       * rethrows the exception being handled to tell the kinds apart.
+       */
+      int
+      report_bad_input(const std::string &where, const bool root)
+      {
+        try
+          {
+            throw;
+          }
+        catch (const std::bad_alloc &)
+          {
+            if (root)
+              std::cerr << "psmpm: error in " << where
+                        << ": out of memory while setting up the scene "
+                           "(reduce the number of blocks or particles).\n";
+          }
+        catch (const std::exception &e)
+          {
+            if (root)
+              std::cerr << "psmpm: error in " << where << ": " << message_of(e)
+                        << "\n";
+          }
+        catch (...)
+          {
+            // muParser's exceptions are not std::exceptions.
+            if (root)
+              std::cerr << "psmpm: error in " << where
+                        << ": an expression or its constants could not be "
+                           "parsed (Initial conditions/Function constants, "
+                           "Velocity, Stress function).\n";
+          }
+        return bad_input;
+      }
+
+      /// Read and check the whole input into @p scene: the exit code if
+      /// psmpm ends here (an answer without a scene, --print-parameters
+      /// or bad input), none if the scene is to run.
+      std::optional<int>
+      read_scene(const std::vector<std::string> &args,
+                 ParameterHandler               &prm,
+                 MPI_Comm                        comm,
+                 const bool                      root,
+                 Scene                          &scene)
+      {
+        try
+          {
+            scene.cl = parse_command_line(args);
+            if (const auto code = answer_without_scene(scene.cl, prm, root))
+              return code;
+            scene.where = scene.cl.prm_file.empty() ?
+                            "the embedded default scene" :
+                            "file " + scene.cl.prm_file;
+            read_parameters(scene.cl, prm);
+            if (scene.cl.print_parameters)
+              {
+                if (root)
+                  prm.print_parameters(std::cout, ParameterHandler::PRM);
+                return success;
+              }
+            set_up_scene(prm, comm, scene);
+          }
+        catch (...)
+          {
+            return report_bad_input(scene.where, root);
+          }
+        return std::nullopt;
+      }
+
+      /**
+       * The output directory: created, locked and cleared on rank 0 (kept
+       * for --resume, which then loads the newest checkpoint); all ranks
+       * learn of a failure and stop with bad_input, whose exit code is
+       * returned.
+       */
+      std::optional<int>
+      open_output(OutputDirectory &output,
+                  const Scene     &scene,
+                  MPI_Comm         comm,
+                  const bool       root)
+      {
+        try
+          {
+            output.open(scene.dir, comm, scene.cl.resume);
+            if (scene.cl.resume)
+              {
+                // The newest checkpoint; a damaged one is reported, not
+                // skipped: the user decides whether to remove it.
+                std::vector<std::string> files;
+                if (root)
+                  files = Simulator::Checkpoint::list(scene.dir);
+                files = Utilities::MPI::broadcast(comm, files, 0);
+                AssertThrow(!files.empty(),
+                            ExcMessage(
+                              "--resume: no checkpoint (checkpoint-<step>.h5) "
+                              "in the output directory '" +
+                              scene.dir +
+                              "'. A run writes one at its end, when it is "
+                              "interrupted and every Checkpoint/Interval "
+                              "steps."));
+                scene.problem->resume(scene.dir, files);
+              }
+          }
+        catch (const std::exception &e)
+          {
+            if (root)
+              std::cerr << "psmpm: error in " << scene.where << ": "
+                        << message_of(e) << "\n";
+            return bad_input;
+          }
+        return std::nullopt;
+      }
+
+      /// parameters.prm, written on rank 0; every rank throws
+      /// ExcWriteFailed if it could not be written.
+      void
+      write_parameters(const ParameterHandler &prm,
+                       const std::string      &dir,
+                       MPI_Comm                comm,
+                       const bool              root)
+      {
+        std::string error;
+        if (root)
+          try
+            {
+              write_atomically(dir + "/parameters.prm", [&](std::ostream &out) {
+                prm.print_parameters(out, ParameterHandler::PRM);
+              });
+            }
+          catch (const ExcWriteFailed &e)
+            {
+              error = e.what();
+            }
+        error = Utilities::MPI::broadcast(comm, error, 0);
+        if (!error.empty())
+          throw ExcWriteFailed(error);
+      }
+
+      /// The entries of summary.json that say how the run was made.
+      void
+      add_run_information(Postprocess::Summary &summary,
+                          const Timer          &wall,
+                          const std::string    &parameter_file)
+      {
+        summary.set("wall_time_s", wall.wall_time());
+        summary.set("cpu_time_s", process_cpu_seconds());
+        summary.set("parameter_file", parameter_file);
+        summary.set("version", version());
+      }
+
+      /// Run the set-up Problem into its open output directory: screen
+      /// lines, parameters.prm, the Problem's output, summary.json; the
+      /// exit code.
+      int
+      run_problem(const Scene            &scene,
+                  const ParameterHandler &prm,
+                  const Timer            &wall,
+                  MPI_Comm                comm,
+                  const bool              root)
+      {
+        const std::string   &dir         = scene.dir;
+        const bool           test_output = scene.output.test_output;
+        LogFile              log_file(dir + "/log.txt", root, scene.cl.resume);
+        Postprocess::Summary summary;
+        const std::string    parameter_file =
+          scene.cl.prm_file.empty() ? "(default scene)" : scene.cl.prm_file;
+        try
+          {
+            if (root && !test_output)
+              std::cout
+                << "psmpm " << version() << ": " << scene.where
+                << ", output in "
+                << std::filesystem::absolute(dir).lexically_normal().string()
+                << " (screen output also in log.txt)" << std::endl;
+            scene.problem->announce(root && !test_output);
+            write_parameters(prm, dir, comm, root);
+            const auto status = scene.problem->run(dir, summary, comm);
+            add_run_information(summary, wall, parameter_file);
+            if (root)
+              {
+                summary.write(dir + "/summary.json");
+                if (test_output)
+                  {
+                    std::cout << "status = " << Simulator::status_name(status)
+                              << "\n";
+                    print_test_output(scene.problem->test_output_keys(),
+                                      summary,
+                                      std::cout);
+                  }
+                else
+                  std::cout << "psmpm: " << summary.to_json();
+              }
+            return scene.problem->exit_code(status);
+          }
+        catch (const ExcWriteFailed &e)
+          {
+            // The disk is full or the directory went away: say which file,
+            // and leave a summary if one can still be written.
+            if (root)
+              {
+                std::cerr << "psmpm: error: " << e.what() << "\n";
+                try
+                  {
+                    Postprocess::Summary failed;
+                    failed.set("status", "failed");
+                    failed.set("reason", e.what());
+                    add_run_information(failed, wall, parameter_file);
+                    failed.write(dir + "/summary.json");
+                  }
+                catch (const std::exception &)
+                  {
+                  }
+              }
+            return write_failed;
+          }
+        catch (const std::exception &e)
+          {
+            if (root)
+              std::cerr << "psmpm: internal error: " << message_of(e) << "\n";
+            return internal;
+          }
+      }
+    } // namespace
 
     int
     run(const std::vector<std::string> &args, MPI_Comm comm)
@@ -470,311 +683,30 @@ end
       Timer      wall;
       wall.start();
 
-      CommandLine      cl;
+      // Nothing is written unless the whole input is valid.
       ParameterHandler prm;
       declare_parameters(prm);
-      std::unique_ptr<Simulator::SimulatorBase> solver;
-      Mesh::MeshGenerator<2>                    mesh;
-      Solver::L2Projection                      projection;
-      Solver::MassMatrixStudy                   mass_matrix_study;
-      RunLimits                                 limits;
-      std::string                               problem, basis, dir;
-      bool                                      test_output = false;
-      std::string                               where = "the command line";
-      try
-        {
-          cl = parse_command_line(args);
-          if (cl.help)
-            {
-              if (root)
-                std::cout << usage;
-              return success;
-            }
-          if (cl.version)
-            {
-              if (root)
-                std::cout << "psmpm " << version() << "\n";
-              return success;
-            }
-          // Without a scene: every entry with its default; with a scene
-          // (and --set): the scene's values, documentation included.
-          if (cl.print_parameters && cl.prm_file.empty() &&
-              cl.overrides.empty())
-            {
-              if (root)
-                prm.print_parameters(std::cout, ParameterHandler::PRM);
-              return success;
-            }
-          where = cl.prm_file.empty() ? "the embedded default scene" :
-                                        "file " + cl.prm_file;
-          if (cl.prm_file.empty())
-            prm.parse_input_from_string(default_scene, "default scene");
-          else
-            {
-              check_parameter_file(cl.prm_file);
-              prm.parse_input(cl.prm_file);
-            }
-          for (const auto &o : cl.overrides)
-            apply_override(prm, o);
-          if (cl.print_parameters)
-            {
-              if (root)
-                prm.print_parameters(std::cout, ParameterHandler::PRM);
-              return success;
-            }
-          resolve_mesh_file(prm, cl.prm_file);
-          limits.parse_parameters(prm);
-          dir = prm.get("Output directory");
-          OutputDirectory::check_name(dir);
-          prm.enter_subsection("Output");
-          test_output                    = prm.get_bool("Test output");
-          const double time_interval     = prm.get_double("Time interval");
-          const double progress_interval = prm.get_double("Progress interval");
-          prm.leave_subsection();
-          problem = prm.get("Problem");
-          if (problem == "mpm")
-            {
-              prm.enter_subsection("Geometry");
-              const unsigned int dimension = prm.get_integer("Dimension");
-              prm.leave_subsection();
-              limits.check_entries(prm);
-              check_function_constants(prm);
-              solver = Simulator::create_simulator(dimension, comm);
-              {
-                // deal.II's FunctionParser prints the muParser error to
-                // std::cerr before it throws; psmpm's message says it.
-                std::ostringstream parser_noise;
-                struct Restore
-                {
-                  std::streambuf *old;
-                  ~Restore()
-                  {
-                    std::cerr.rdbuf(old);
-                  }
-                } restore{std::cerr.rdbuf(parser_noise.rdbuf())};
-                solver->parse_parameters(prm);
-                limits.check_scene(prm);
-                solver->setup();
-              }
-              solver->check_initial_state();
-              solver->quiet                = test_output;
-              solver->output_time_interval = time_interval;
-              solver->progress_interval    = progress_interval;
-              limits.check_run(solver->estimate_size());
-            }
-          else if (problem == "mass matrix study")
-            mass_matrix_study.parse_parameters(prm);
-          else
-            {
-              mesh.parse_parameters(prm);
-              projection.parse_parameters(prm);
-              prm.enter_subsection("Basis");
-              basis = prm.get("Type");
-              prm.leave_subsection();
-              // The projection integrates on Powell-Sabin sub-triangles.
-              AssertThrow(mesh.type != Mesh::MeshGenerator<2>::Type::cartesian,
-                          ExcMessage("Mesh/Type = cartesian: Problem = l2 "
-                                     "projection runs on triangles only."));
-              AssertThrow(!mesh.distributed,
-                          ExcMessage("Mesh/Distribution = distributed: "
-                                     "Problem = l2 projection runs on a "
-                                     "serial mesh (use replicated)."));
-              AssertThrow(
-                Basis::create_space<2>(basis)->dof_layout().reference_cell() ==
-                  ReferenceCells::Triangle,
-                ExcMessage("Basis/Type = " + basis +
-                           ": Problem = l2 projection runs on "
-                           "triangles only (a basis of "
-                           "triangles: linear or powell-sabin)."));
-              projection.check_scene(mesh, basis);
-            }
-        }
-      catch (const std::bad_alloc &)
+      Scene scene;
+      if (const auto code = read_scene(args, prm, comm, root, scene))
+        return *code;
+      if (scene.cl.validate)
         {
           if (root)
-            std::cerr << "psmpm: error in " << where
-                      << ": out of memory while setting up the scene (reduce "
-                         "the number of blocks or particles).\n";
-          return bad_input;
-        }
-      catch (const std::exception &e)
-        {
-          if (root)
-            std::cerr << "psmpm: error in " << where << ": " << message_of(e)
-                      << "\n";
-          return bad_input;
-        }
-      catch (...)
-        {
-          // muParser's exceptions are not std::exceptions.
-          if (root)
-            std::cerr << "psmpm: error in " << where
-                      << ": an expression or its constants could not be "
-                         "parsed (Initial conditions/Function constants, "
-                         "Velocity, Stress function).\n";
-          return bad_input;
-        }
-      if (cl.validate)
-        {
-          if (root)
-            std::cout << "psmpm: " << where << " is valid.\n";
+            std::cout << "psmpm: " << scene.where << " is valid.\n";
           return success;
         }
-      if (cl.resume && !solver)
+      if (scene.cl.resume && !scene.problem->resumable())
         {
           if (root)
-            std::cerr << "psmpm: error in " << where
+            std::cerr << "psmpm: error in " << scene.where
                       << ": --resume needs an mpm scene (Problem = mpm).\n";
           return bad_input;
         }
 
-      // The output directory: created, locked and cleared on rank 0 (kept
-      // for --resume); all ranks learn of a failure and stop with
-      // bad_input.
       OutputDirectory output;
-      try
-        {
-          output.open(dir, comm, cl.resume);
-          if (cl.resume)
-            {
-              // The newest checkpoint; a damaged one is reported, not
-              // skipped: the user decides whether to remove it.
-              std::vector<std::string> files;
-              if (root)
-                files = Simulator::Checkpoint::list(dir);
-              files = Utilities::MPI::broadcast(comm, files, 0);
-              AssertThrow(!files.empty(),
-                          ExcMessage(
-                            "--resume: no checkpoint (checkpoint-<step>.h5) "
-                            "in the output directory '" +
-                            dir +
-                            "'. A run writes one at its end, when it is "
-                            "interrupted and every Checkpoint/Interval "
-                            "steps."));
-              solver->resume(dir, files);
-            }
-        }
-      catch (const std::exception &e)
-        {
-          if (root)
-            std::cerr << "psmpm: error in " << where << ": " << message_of(e)
-                      << "\n";
-          return bad_input;
-        }
-      LogFile                      log_file(dir + "/log.txt", root, cl.resume);
-      Postprocess::Summary         summary;
-      std::unique_ptr<StopRequest> stop;
-      const std::string            parameter_file =
-        cl.prm_file.empty() ? "(default scene)" : cl.prm_file;
-      const auto finish_summary = [&]() {
-        summary.set("wall_time_s", wall.wall_time());
-        summary.set("cpu_time_s", process_cpu_seconds());
-        summary.set("parameter_file", parameter_file);
-        summary.set("version", version());
-      };
-      try
-        {
-          if (root && !test_output)
-            std::cout
-              << "psmpm " << version() << ": " << where << ", output in "
-              << std::filesystem::absolute(dir).lexically_normal().string()
-              << " (screen output also in log.txt)" << std::endl;
-          if (solver)
-            {
-              // Collective: every rank computes it.
-              const auto size = solver->estimate_size();
-              if (root && !test_output)
-                std::cout << "psmpm: about " << size.steps << " steps, "
-                          << size.n_outputs << " outputs, "
-                          << std::max(1.,
-                                      std::round(size.output_bytes / 1048576.))
-                          << " MiB of output (estimated)" << std::endl;
-            }
-          std::string error;
-          if (root)
-            try
-              {
-                write_atomically(dir + "/parameters.prm",
-                                 [&](std::ostream &out) {
-                                   prm.print_parameters(out,
-                                                        ParameterHandler::PRM);
-                                 });
-              }
-            catch (const ExcWriteFailed &e)
-              {
-                error = e.what();
-              }
-          error = Utilities::MPI::broadcast(comm, error, 0);
-          if (!error.empty())
-            throw ExcWriteFailed(error);
-
-          auto status = Simulator::Status::completed;
-          if (problem == "mpm")
-            {
-              stop   = std::make_unique<StopRequest>();
-              status = solver->run(dir);
-              stop.reset();
-              solver->fill_summary(summary);
-            }
-          else if (problem == "mass matrix study")
-            {
-              mass_matrix_study.run(dir, summary, comm);
-              summary.set("status", "completed");
-            }
-          else
-            {
-              projection.run(mesh, basis, dir, summary, comm);
-              summary.set("status", "completed");
-            }
-          finish_summary();
-          if (root)
-            {
-              summary.write(dir + "/summary.json");
-              if (test_output)
-                {
-                  std::cout << "status = " << Simulator::status_name(status)
-                            << "\n";
-                  print_test_output(problem, summary, std::cout);
-                }
-              else
-                std::cout << "psmpm: " << summary.to_json();
-            }
-          if (status == Simulator::Status::completed)
-            return success;
-          if (status == Simulator::Status::interrupted)
-            return interrupted + solver->stop_signal;
-          return Simulator::failure_info(solver->get_failure()).exit_code;
-        }
-      catch (const ExcWriteFailed &e)
-        {
-          // The disk is full or the directory went away: say which file,
-          // and leave a summary if one can still be written.
-          if (root)
-            {
-              std::cerr << "psmpm: error: " << e.what() << "\n";
-              try
-                {
-                  Postprocess::Summary failed;
-                  failed.set("status", "failed");
-                  failed.set("reason", e.what());
-                  failed.set("wall_time_s", wall.wall_time());
-                  failed.set("cpu_time_s", process_cpu_seconds());
-                  failed.set("parameter_file", parameter_file);
-                  failed.set("version", version());
-                  failed.write(dir + "/summary.json");
-                }
-              catch (const std::exception &)
-                {
-                }
-            }
-          return write_failed;
-        }
-      catch (const std::exception &e)
-        {
-          if (root)
-            std::cerr << "psmpm: internal error: " << message_of(e) << "\n";
-          return internal;
-        }
+      if (const auto code = open_output(output, scene, comm, root))
+        return *code;
+      return run_problem(scene, prm, wall, comm, root);
     }
 
     int
