@@ -14,6 +14,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -75,6 +76,32 @@ check_particles_in_cells(const psmpm::Simulator::Simulator<2> &solver)
       agree = agree && found;
     }
   return {worst, agree};
+}
+
+/// One step of @p dt from particles that carry the affine velocity field
+/// v = A x + b: the largest error of their new velocities against that
+/// field at their old positions, and of their affine matrices against
+/// @p C (particles may be reordered by locating; matched by id).
+inline std::pair<double, double>
+affine_step_errors(psmpm::Simulator::Simulator<2> &solver,
+                   const Tensor<2, 2>             &A,
+                   const Tensor<1, 2>             &b,
+                   const Tensor<2, 2>             &C,
+                   const double                    dt)
+{
+  const auto &p = solver.get_particles();
+  std::map<std::uint64_t, Point<2>> old;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    old[p.id[i]] = p.position[i];
+  solver.do_time_step(dt);
+  double v_error = 0, c_error = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    {
+      v_error =
+        std::max(v_error, (p.velocity[i] - (A * old[p.id[i]] + b)).norm());
+      c_error = std::max(c_error, (p.affine[i] - C).norm());
+    }
+  return {v_error, c_error};
 }
 
 /// The rows of @p directory/statistics.txt by column name.

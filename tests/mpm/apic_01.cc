@@ -100,21 +100,8 @@ namespace
     // P1's automatic affine matrix is the rotational part of the gradient.
     const Tensor<2, 2> C  = basis == "linear" ? 0.5 * (A - transpose(A)) : A;
     const auto        &p  = solver->get_particles();
-    const auto         x0 = p.position;
-    const auto         id = p.id;
     const Tensor<1, 2> p0 = momentum(p);
-    solver->do_time_step(1e-3);
-    // Particles may be reordered by locating; match them by id.
-    std::map<std::uint64_t, Point<2>> old;
-    for (std::size_t i = 0; i < id.size(); ++i)
-      old[id[i]] = x0[i];
-    double v_error = 0, c_error = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      {
-        v_error =
-          std::max(v_error, (p.velocity[i] - (A * old[p.id[i]] + b)).norm());
-        c_error = std::max(c_error, (p.affine[i] - C).norm());
-      }
+    const auto [v_error, c_error] = affine_step_errors(*solver, A, b, C, 1e-3);
     out << basis << ", " << mass << ", affine field:" << std::endl;
     // Exact up to the mass solve: lumped is a division, the matrix
     // strategies a CG solve to relative residual 1e-12.

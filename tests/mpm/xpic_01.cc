@@ -107,20 +107,7 @@ namespace
        "Initial conditions/Velocity=0.3*x - 0.7*y + 0.2; 0.5*x + 0.1*y - 0.4"});
     const Tensor<2, 2> A({{0.3, -0.7}, {0.5, 0.1}});
     const Tensor<1, 2> b({0.2, -0.4});
-    const auto        &p  = solver->get_particles();
-    const auto         x0 = p.position;
-    const auto         id = p.id;
-    solver->do_time_step(1e-3);
-    std::map<std::uint64_t, Point<2>> old;
-    for (std::size_t i = 0; i < id.size(); ++i)
-      old[id[i]] = x0[i];
-    double v_error = 0, c_error = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      {
-        v_error =
-          std::max(v_error, (p.velocity[i] - (A * old[p.id[i]] + b)).norm());
-        c_error = std::max(c_error, (p.affine[i] - A).norm());
-      }
+    const auto [v_error, c_error] = affine_step_errors(*solver, A, b, A, 1e-3);
     out << mass << ", affine field, XPIC order 3:" << std::endl;
     PSMPM_CHECK(out, v_error < 1e-10);
     PSMPM_CHECK(out, c_error < 1e-8);
