@@ -17,7 +17,7 @@
 
 #include <psmpm/base/mpi_session.h>
 #include <psmpm/mesh/mesh_generator.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/solver/l2_projection.h>
 
 #include <chrono>
@@ -67,7 +67,7 @@ main(int argc, char **argv)
           projection.output_basis_function = std::stoul(pair.substr(comma + 1));
         }
 
-      psmpm::Postprocess::Summary summary;
+      psmpm::Summary summary;
       const auto                  start = std::chrono::steady_clock::now();
       projection.run(mesh, basis, output, summary, MPI_COMM_WORLD);
       const double wall =

@@ -13,7 +13,7 @@
 #include <psmpm/base/checked_file.h>
 #include <psmpm/base/cpu_time.h>
 #include <psmpm/base/version.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/simulator.h>
 
@@ -230,7 +230,7 @@ end
       /// (those in the summary).
       void
       print_test_output(const Problem::TestOutputKeys &keys,
-                        const Postprocess::Summary    &summary,
+                        const Summary    &summary,
                         std::ostream                  &out)
       {
         for (const std::string &key : keys.sizes)
@@ -592,7 +592,7 @@ end
 
       /// The entries of summary.json that say how the run was made.
       void
-      add_run_information(Postprocess::Summary &summary,
+      add_run_information(Summary &summary,
                           const Timer          &wall,
                           const std::string    &parameter_file)
       {
@@ -615,7 +615,7 @@ end
         const std::string   &dir         = scene.dir;
         const bool           test_output = scene.output.test_output;
         LogFile              log_file(dir + "/log.txt", root, scene.cl.resume);
-        Postprocess::Summary summary;
+        Summary summary;
         const std::string    parameter_file =
           scene.cl.prm_file.empty() ? "(default scene)" : scene.cl.prm_file;
         try
@@ -655,7 +655,7 @@ end
                 std::cerr << "psmpm: error: " << e.what() << "\n";
                 try
                   {
-                    Postprocess::Summary failed;
+                    Summary failed;
                     failed.set("status", "failed");
                     failed.set("reason", e.what());
                     add_run_information(failed, wall, parameter_file);

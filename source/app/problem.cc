@@ -9,7 +9,7 @@
 #include <psmpm/base/stop_request.h>
 #include <psmpm/basis/space.h>
 #include <psmpm/mesh/mesh_generator.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/simulator/simulator.h>
 #include <psmpm/solver/l2_projection.h>
 #include <psmpm/solver/mass_matrix_study.h>
@@ -197,7 +197,7 @@ namespace psmpm
 
         Simulator::Status
         run(const std::string    &output_directory,
-            Postprocess::Summary &summary,
+            Summary &summary,
             MPI_Comm) override
         {
           // SIGINT/SIGTERM finish the step and write the output only while
@@ -270,7 +270,7 @@ namespace psmpm
 
         Simulator::Status
         run(const std::string    &output_directory,
-            Postprocess::Summary &summary,
+            Summary &summary,
             MPI_Comm              comm) override
         {
           projection.run(mesh, basis, output_directory, summary, comm);
@@ -305,7 +305,7 @@ namespace psmpm
 
         Simulator::Status
         run(const std::string    &output_directory,
-            Postprocess::Summary &summary,
+            Summary &summary,
             MPI_Comm              comm) override
         {
           study.run(output_directory, summary, comm);

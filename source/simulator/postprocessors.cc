@@ -127,7 +127,7 @@ namespace psmpm
     template <int dim>
     void
     Postprocessors<dim>::fill_summary(const Postprocess::StateView<dim> &view,
-                                      Postprocess::Summary &summary) const
+                                      Summary &summary) const
     {
       for (const auto &p : list)
         p->fill_summary(view, summary);

@@ -1227,7 +1227,7 @@ namespace psmpm
 
     template <int dim>
     void
-    Simulator<dim>::fill_summary(Postprocess::Summary &summary) const
+    Simulator<dim>::fill_summary(Summary &summary) const
     {
       summary.set("status", status_name(status));
       if (status == Status::interrupted)

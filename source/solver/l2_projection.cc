@@ -205,7 +205,7 @@ namespace psmpm
     L2Projection::run(const Mesh::MeshGenerator<2> &mesh,
                       const std::string            &basis_name,
                       const std::string            &output_directory,
-                      Postprocess::Summary         &summary,
+                      Summary         &summary,
                       MPI_Comm                      comm)
     {
       Triangulation<2> tria;

@@ -398,7 +398,7 @@ namespace psmpm
 
     void
     MassMatrixStudy::run(const std::string    &output_directory,
-                         Postprocess::Summary &summary,
+                         Summary &summary,
                          MPI_Comm              comm) const
     {
       const auto   rows              = compute();

@@ -7,7 +7,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/mesh/mesh_generator.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/solver/l2_projection.h>
 
 #include "../tests.h"
@@ -34,13 +34,13 @@ main(int argc, char **argv)
     projection.write_output        = false;
     for (const auto *mesh : {&diagonal, &gmsh})
       {
-        Postprocess::Summary summary;
+        Summary summary;
         projection.run(*mesh, "powell-sabin", ".", summary, MPI_COMM_WORLD);
         out << "powell-sabin: cells " << summary.get_number("n_cells")
             << ", dofs " << summary.get_number("n_dofs") << std::endl;
         PSMPM_CHECK(out, summary.get_number("errors.L2") < 1e-10);
 
-        Postprocess::Summary p1;
+        Summary p1;
         projection.run(*mesh, "linear", ".", p1, MPI_COMM_WORLD);
         out << "linear: dofs " << p1.get_number("n_dofs") << std::endl;
         PSMPM_CHECK(out, p1.get_number("errors.L2") > 1e-4);
@@ -51,7 +51,7 @@ main(int argc, char **argv)
     projection.write_output          = true;
     projection.output_basis_vertex   = 4;
     projection.output_basis_function = 1;
-    Postprocess::Summary summary;
+    Summary summary;
     projection.run(diagonal, "powell-sabin", ".", summary, MPI_COMM_WORLD);
     std::ifstream     vtu("projection.vtu");
     const std::string text((std::istreambuf_iterator<char>(vtu)),

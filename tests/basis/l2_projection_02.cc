@@ -7,7 +7,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/mesh/mesh_generator.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/solver/l2_projection.h>
 
 #include "../tests.h"
@@ -28,7 +28,7 @@ main(int argc, char **argv)
         mesh.blocks_x = mesh.blocks_y = 2 << i;
         Solver::L2Projection projection;
         projection.write_output = false;
-        Postprocess::Summary summary;
+        Summary summary;
         projection.run(mesh, "powell-sabin", ".", summary, MPI_COMM_WORLD);
         error[i] = summary.get_number("errors.L2");
         out << "blocks " << mesh.blocks_x << ", dofs "

@@ -16,8 +16,8 @@ using namespace psmpm;
 
 namespace
 {
-  // The old class (commit 6ce64da, include/psmpm/material/linear_elastic.h),
-  // verbatim apart from the class name.
+  // The linear elastic update written out independently (the model's
+  // first implementation), as a reference for the hypoelastic class.
   class OldLinearElastic
   {
   public:

@@ -1,7 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-// Issue 9's suite with the defaults (Mass matrix/Type = automatic,
+// The stability suite with the defaults (Mass matrix/Type = automatic,
 // Transfer/Scheme = automatic, Time/Time step = 0: the automatic step
 // recomputed every step), both bases, short versions of the scenes of
 // contrib/studies/stability/defaults_suite.sh (which runs them in full):

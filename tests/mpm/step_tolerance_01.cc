@@ -14,7 +14,7 @@
 //     momentum to round-off): the same CG iterations and the same final
 //     angular momentum, bit for bit, as Step tolerance = 0, and a change
 //     of the angular momentum below 1e-13.
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 #include "../mpm_tests.h"
 
@@ -22,7 +22,7 @@
 
 namespace
 {
-  psmpm::Postprocess::Summary
+  psmpm::Summary
   run(const std::string       &scene,
       std::vector<std::string> overrides,
       const std::string       &directory)
@@ -33,7 +33,7 @@ namespace
     const auto status = solver->run(directory);
     AssertThrow(status == psmpm::Simulator::Status::completed,
                 ExcMessage(directory + " did not complete"));
-    psmpm::Postprocess::Summary summary;
+    psmpm::Summary summary;
     solver->fill_summary(summary);
     return summary;
   }

@@ -13,7 +13,7 @@
 
 #include <psmpm/base/archive.h>
 #include <psmpm/postprocess/postprocessor.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/simulator/checkpoint.h>
 
 #include "../mpm_tests.h"
@@ -57,7 +57,7 @@ namespace
 
     void
     fill_summary(const Postprocess::StateView<dim> &,
-                 Postprocess::Summary &summary) const override
+                 Summary &summary) const override
     {
       summary.set("max_speed_over_time", largest);
     }
@@ -83,7 +83,7 @@ main(int argc, char **argv)
     make_scene_solver<2>("vibrating_bar_small.prm",
                          {"Time/End time=0.004", "Output/Interval=0"});
   const auto           status = solver->run(directory);
-  Postprocess::Summary summary;
+  Summary summary;
   solver->fill_summary(summary);
 
   const StatisticsTable table(directory);

@@ -16,7 +16,7 @@
 
 #include <psmpm/postprocess/energies.h>
 #include <psmpm/postprocess/rotation_statistics.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 #include "../mpm_tests.h"
 
@@ -58,7 +58,7 @@ main(int argc, char **argv)
                            "Output/Interval=0"});
         std::filesystem::create_directories(directory);
         const auto           status = solver->run(directory);
-        Postprocess::Summary summary;
+        Summary summary;
         solver->fill_summary(summary);
         const auto  &state  = solver->get_state();
         const double chunks = summary.get_number("angular_momentum_final");

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Iterations and cost of Jacobi-CG, AMG-CG and pmg-CG (p-multigrid V-cycle,
 Powell-Sabin only) on psmpm's own consistent particle mass matrices
-(issues 10 and 11, part 2 of doc/solver_study.md).
+(part 2 of doc/solver_study.md).
 
   /usr/bin/python3 contrib/studies/solvers/particle_mass_solvers.py
 

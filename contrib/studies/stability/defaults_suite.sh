@@ -1,5 +1,5 @@
 #!/bin/bash
-# Issue 9's "done when" check: every scene of the stability suite with the
+# The defaults' check: every scene of the stability suite with the
 # defaults (Mass matrix/Type = automatic, Transfer/Scheme = automatic,
 # automatic time step recomputed every step: Time/Time step = 0), both
 # bases. One markdown table: status, steps, conservation, error against

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Issue 9's suite: contrib/studies/stability/transfer_study.sh (every basis x mass matrix x
+# The stability suite: contrib/studies/stability/transfer_study.sh (every basis x mass matrix x
 # transfer) on every scene of the suite, one markdown table per scene, into
 # a work directory (default: a new one under /tmp; never the repository).
 # The cantilever takes tens of minutes of CPU for the matrix strategies:

@@ -15,10 +15,7 @@
 
 namespace psmpm
 {
-  namespace Postprocess
-  {
-    class Summary;
-  }
+  class Summary;
 
   namespace App
   {
@@ -77,7 +74,7 @@ namespace psmpm
       /// @p summary (status included).
       virtual Simulator::Status
       run(const std::string    &output_directory,
-          Postprocess::Summary &summary,
+          Summary &summary,
           MPI_Comm              comm) = 0;
 
       /// The exit code of a run that ended with @p status.

@@ -7,7 +7,7 @@
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 namespace psmpm
 {

@@ -4,7 +4,7 @@
 #ifndef psmpm_postprocess_oscillation_h
 #define psmpm_postprocess_oscillation_h
 
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 #include <vector>
 

@@ -9,7 +9,7 @@
 #include <psmpm/base/registry.h>
 #include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 #include <cstddef>
 #include <limits>

@@ -8,7 +8,7 @@
 
 #include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 #include <vector>
 

@@ -7,7 +7,7 @@
 #include <psmpm/base/growing_text_file.h>
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/state_view.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 #include <array>
 #include <memory>

@@ -55,7 +55,7 @@ namespace psmpm
       load(const Archive &archive);
       void
       fill_summary(const Postprocess::StateView<dim> &view,
-                   Postprocess::Summary              &summary) const;
+                   Summary              &summary) const;
 
       /// The energies of the last execute() (zero if no postprocessor
       /// computes them).

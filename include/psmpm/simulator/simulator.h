@@ -17,7 +17,7 @@
 #include <psmpm/postprocess/output_writer.h>
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/initial_stress.h>
@@ -86,7 +86,7 @@ namespace psmpm
       resume(const std::string              &output_directory,
              const std::vector<std::string> &checkpoint_files) = 0;
       virtual void
-      fill_summary(Postprocess::Summary &summary) const = 0;
+      fill_summary(Summary &summary) const = 0;
       virtual Failure
       get_failure() const = 0;
       /// Estimated steps and output volume (after setup(); collective).
@@ -173,7 +173,7 @@ namespace psmpm
 
       /// Status, errors, counts and timers (the caller adds wall time).
       void
-      fill_summary(Postprocess::Summary &summary) const override;
+      fill_summary(Summary &summary) const override;
 
       Postprocess::Errors
       compute_errors() const;

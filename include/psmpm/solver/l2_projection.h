@@ -9,7 +9,7 @@
 
 #include <psmpm/basis/space.h>
 #include <psmpm/mesh/mesh_generator.h>
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 
 #include <string>
 
@@ -66,7 +66,7 @@ namespace psmpm
       run(const Mesh::MeshGenerator<2> &mesh,
           const std::string            &basis_name,
           const std::string            &output_directory,
-          Postprocess::Summary         &summary,
+          Summary         &summary,
           MPI_Comm                      comm);
 
       /// Throws ExcMessage naming Output/Basis function if it is not a

@@ -10,7 +10,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
-#include <psmpm/postprocess/summary.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/solver/p_multigrid.h>
 
 #include <memory>
@@ -43,7 +43,7 @@ namespace psmpm
     kronecker_product(const FullMatrix<double> &A, const FullMatrix<double> &B);
 
     /**
-     * The "mass matrix study" problem (issue 11; Wobbes et al. 2019
+     * The "mass matrix study" problem (Wobbes et al. 2019
      * sections 4.6 and 4.7, Tables 4.2 to 4.4): consistent mass matrices
      * (rho = 1) of tensor-product B-splines of degree p on the unit square
      * with open uniform knot vectors, with homogeneous Dirichlet conditions
@@ -116,7 +116,7 @@ namespace psmpm
        */
       void
       run(const std::string    &output_directory,
-          Postprocess::Summary &summary,
+          Summary &summary,
           MPI_Comm              comm) const;
 
       /// Writes @p rows as the tab-separated table ("-": not converged).
