@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Install psmpm from a build tree, build an out-of-tree example against the
 # installation and run it on a scene. Passes only if the run exits 0 and
-# its summary.json says "status": "completed".
-#   build_and_run.sh CMAKE PSMPM_BUILD_DIR EXAMPLE_SOURCE_DIR SCENE WORK_DIR
+# its summary.json says "status": "completed", and, if a CHECK command is
+# given, that command passes on the run's results:
+#   build_and_run.sh CMAKE PSMPM_BUILD_DIR EXAMPLE_SOURCE_DIR SCENE WORK_DIR \
+#     [CHECK ARGS...]
+# runs CHECK ARGS... EXECUTABLE SCENE_FILE OUTPUT_DIRECTORY last.
 # The executable is the example's project name (its directory name).
 set -euo pipefail
 
@@ -53,3 +56,9 @@ if ! grep -Eq '"status"[[:space:]]*:[[:space:]]*"completed"' "$summary"; then
   exit 1
 fi
 echo "OK: $summary reports completed"
+
+if [ $# -gt 5 ]; then
+  shift 5
+  echo "== check $*"
+  "$@" "$work/build/$name" "$source/$scene" "$(dirname "$summary")"
+fi
