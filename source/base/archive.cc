@@ -81,6 +81,89 @@ namespace psmpm
         return {static_cast<hsize_t>(n)};
       return std::vector<hsize_t>(e.shape.begin(), e.shape.end());
     }
+
+
+
+    /// Write the entry @p e as the dataset @p name of the open HDF5 file
+    /// @p f (groups along the name created through @p links); false if
+    /// HDF5 fails.
+    bool
+    write_dataset(const hid_t           f,
+                  const hid_t           links,
+                  const std::string    &name,
+                  const Archive::Entry &e)
+    {
+      using Type                    = Archive::Type;
+      const std::size_t n           = e.type == Type::real    ? e.reals.size() :
+                                      e.type == Type::integer ? e.integers.size() :
+                                                                e.data.size();
+      const auto        dims        = dimensions(e, n);
+      hid_t             memory_type = H5T_NATIVE_DOUBLE;
+      hid_t             file_type   = H5T_IEEE_F64LE;
+      const void       *data        = e.reals.data();
+      Handle            text_type(-1, H5Tclose);
+      Handle            space(-1, H5Sclose);
+      const char       *text = e.data.c_str();
+      if (e.type == Type::integer)
+        {
+          memory_type = H5T_NATIVE_UINT64;
+          file_type   = H5T_STD_U64LE;
+          data        = e.integers.data();
+        }
+      else if (e.type == Type::bytes)
+        {
+          memory_type = H5T_NATIVE_UINT8;
+          file_type   = H5T_STD_U8LE;
+          data        = e.data.data();
+        }
+      if (e.type == Type::text)
+        {
+          // A scalar variable-length string: h5dump shows it as text.
+          text_type.id = H5Tcopy(H5T_C_S1);
+          H5Tset_size(text_type, H5T_VARIABLE);
+          H5Tset_cset(text_type, H5T_CSET_UTF8);
+          memory_type = file_type = text_type;
+          data                    = &text;
+          space.id                = H5Screate(H5S_SCALAR);
+        }
+      else
+        space.id = H5Screate_simple(dims.size(), dims.data(), nullptr);
+      Handle set(H5Dcreate2(f,
+                            name.c_str(),
+                            file_type,
+                            space,
+                            links,
+                            H5P_DEFAULT,
+                            H5P_DEFAULT),
+                 H5Dclose);
+      if (set < 0 ||
+          (n > 0 || e.type == Type::text ?
+             H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) <
+               0 :
+             false))
+        return false;
+      return set.release();
+    }
+
+
+
+    /// Attach the checksum @p sum to the open HDF5 file @p f; false if
+    /// HDF5 fails.
+    bool
+    write_checksum(const hid_t f, const std::uint64_t sum)
+    {
+      Handle scalar(H5Screate(H5S_SCALAR), H5Sclose);
+      Handle attribute(H5Acreate2(f,
+                                  checksum_attribute,
+                                  H5T_STD_U64LE,
+                                  scalar,
+                                  H5P_DEFAULT,
+                                  H5P_DEFAULT),
+                       H5Aclose);
+      return !(attribute < 0 ||
+               H5Awrite(attribute, H5T_NATIVE_UINT64, &sum) < 0 ||
+               !attribute.release());
+    }
   } // namespace
 
 
@@ -287,72 +370,9 @@ namespace psmpm
       H5Pset_create_intermediate_group(links, 1);
 
       for (const auto &[name, e] : entries)
-        {
-          const std::size_t n    = e.type == Type::real    ? e.reals.size() :
-                                   e.type == Type::integer ? e.integers.size() :
-                                                             e.data.size();
-          const auto        dims = dimensions(e, n);
-          hid_t             memory_type = H5T_NATIVE_DOUBLE;
-          hid_t             file_type   = H5T_IEEE_F64LE;
-          const void       *data        = e.reals.data();
-          Handle            text_type(-1, H5Tclose);
-          Handle            space(-1, H5Sclose);
-          const char       *text = e.data.c_str();
-          if (e.type == Type::integer)
-            {
-              memory_type = H5T_NATIVE_UINT64;
-              file_type   = H5T_STD_U64LE;
-              data        = e.integers.data();
-            }
-          else if (e.type == Type::bytes)
-            {
-              memory_type = H5T_NATIVE_UINT8;
-              file_type   = H5T_STD_U8LE;
-              data        = e.data.data();
-            }
-          if (e.type == Type::text)
-            {
-              // A scalar variable-length string: h5dump shows it as text.
-              text_type.id = H5Tcopy(H5T_C_S1);
-              H5Tset_size(text_type, H5T_VARIABLE);
-              H5Tset_cset(text_type, H5T_CSET_UTF8);
-              memory_type = file_type = text_type;
-              data                    = &text;
-              space.id                = H5Screate(H5S_SCALAR);
-            }
-          else
-            space.id = H5Screate_simple(dims.size(), dims.data(), nullptr);
-          Handle set(H5Dcreate2(f,
-                                name.c_str(),
-                                file_type,
-                                space,
-                                links,
-                                H5P_DEFAULT,
-                                H5P_DEFAULT),
-                     H5Dclose);
-          if (set < 0 || (n > 0 || e.type == Type::text ? H5Dwrite(set,
-                                                                   memory_type,
-                                                                   H5S_ALL,
-                                                                   H5S_ALL,
-                                                                   H5P_DEFAULT,
-                                                                   data) < 0 :
-                                                          false))
-            fail("cannot write the dataset '" + name + "' (disk full?)");
-          if (!set.release())
-            fail("cannot write the dataset '" + name + "' (disk full?)");
-        }
-
-      const std::uint64_t sum = checksum();
-      Handle              scalar(H5Screate(H5S_SCALAR), H5Sclose);
-      Handle              attribute(H5Acreate2(f,
-                                  checksum_attribute,
-                                  H5T_STD_U64LE,
-                                  scalar,
-                                  H5P_DEFAULT,
-                                  H5P_DEFAULT),
-                       H5Aclose);
-      if (attribute < 0 || H5Awrite(attribute, H5T_NATIVE_UINT64, &sum) < 0 ||
-          !attribute.release())
+        if (!write_dataset(f, links, name, e))
+          fail("cannot write the dataset '" + name + "' (disk full?)");
+      if (!write_checksum(f, checksum()))
         fail("cannot write the checksum attribute");
       if (H5Fflush(f, H5F_SCOPE_GLOBAL) < 0 || !f.release())
         fail("cannot close the HDF5 file (disk full?)");
@@ -386,43 +406,24 @@ namespace psmpm
     using ObjectInfo     = H5O_info_t;
 #endif
 
-    /// Read one dataset into the archive (H5Ovisit callback).
-    herr_t
-    read_object(hid_t             root,
-                const char       *name,
-                const ObjectInfo *info,
-                void             *op_data)
+    /**
+     * Read the values of the dataset @p set of HDF5 type @p type, @p n
+     * values in @p rank dimensions, into @p e, setting its type; returns
+     * what is wrong with the dataset, empty if nothing.
+     */
+    std::string
+    read_values(const hid_t       set,
+                const hid_t       type,
+                const int         rank,
+                const std::size_t n,
+                Archive::Entry   &e)
     {
-      auto &visit = *static_cast<VisitData *>(op_data);
-      if (info->type != H5O_TYPE_DATASET)
-        return 0;
-      const auto fail = [&visit, name](const std::string &what) {
-        visit.error = "dataset '" + std::string(name) + "': " + what;
-        return -1;
-      };
-      Handle set(H5Dopen2(root, name, H5P_DEFAULT), H5Dclose);
-      if (set < 0)
-        return fail("cannot be opened");
-      Handle type(H5Dget_type(set), H5Tclose);
-      Handle space(H5Dget_space(set), H5Sclose);
-      if (type < 0 || space < 0)
-        return fail("has no type or shape");
-      const int rank = H5Sget_simple_extent_ndims(space);
-      if (rank < 0)
-        return fail("has no shape");
-      std::vector<hsize_t> dims(rank);
-      H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-      std::size_t n = 1;
-      for (const auto d : dims)
-        n *= d;
-
-      Archive::Entry    e;
       const H5T_class_t c = H5Tget_class(type);
       herr_t            r = 0;
       if (c == H5T_STRING)
         {
           if (!H5Tis_variable_str(type) || rank != 0)
-            return fail("is not a variable-length string");
+            return "is not a variable-length string";
           Handle memory(H5Tcopy(H5T_C_S1), H5Tclose);
           H5Tset_size(memory, H5T_VARIABLE);
           H5Tset_cset(memory, H5T_CSET_UTF8);
@@ -472,16 +473,26 @@ namespace psmpm
                         &e.data[0]);
         }
       else
-        return fail("has a type psmpm does not write");
+        return "has a type psmpm does not write";
       if (r < 0)
-        return fail("cannot be read (truncated or damaged file)");
-      if (rank > 1)
-        e.shape.assign(dims.begin(), dims.end());
-      Archive &a = *visit.archive;
+        return "cannot be read (truncated or damaged file)";
+      return "";
+    }
+
+
+
+    /// Put the entry @p e read as dataset @p name of dimensions @p dims
+    /// into @p a (a table of doubles keeps its columns).
+    void
+    put_entry(Archive                    &a,
+              const char                 *name,
+              const Archive::Entry       &e,
+              const std::vector<hsize_t> &dims)
+    {
       switch (e.type)
         {
           case Archive::Type::real:
-            a.put(name, e.reals, rank > 1 ? dims[1] : 0);
+            a.put(name, e.reals, dims.size() > 1 ? dims[1] : 0);
             break;
           case Archive::Type::integer:
             a.put_integers(name, e.integers);
@@ -493,6 +504,47 @@ namespace psmpm
             a.put_text(name, e.data);
             break;
         }
+    }
+
+
+
+    /// Read one dataset into the archive (H5Ovisit callback).
+    herr_t
+    read_object(hid_t             root,
+                const char       *name,
+                const ObjectInfo *info,
+                void             *op_data)
+    {
+      auto &visit = *static_cast<VisitData *>(op_data);
+      if (info->type != H5O_TYPE_DATASET)
+        return 0;
+      const auto fail = [&visit, name](const std::string &what) {
+        visit.error = "dataset '" + std::string(name) + "': " + what;
+        return -1;
+      };
+      Handle set(H5Dopen2(root, name, H5P_DEFAULT), H5Dclose);
+      if (set < 0)
+        return fail("cannot be opened");
+      Handle type(H5Dget_type(set), H5Tclose);
+      Handle space(H5Dget_space(set), H5Sclose);
+      if (type < 0 || space < 0)
+        return fail("has no type or shape");
+      const int rank = H5Sget_simple_extent_ndims(space);
+      if (rank < 0)
+        return fail("has no shape");
+      std::vector<hsize_t> dims(rank);
+      H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+      std::size_t n = 1;
+      for (const auto d : dims)
+        n *= d;
+
+      Archive::Entry    e;
+      const std::string problem = read_values(set, type, rank, n, e);
+      if (!problem.empty())
+        return fail(problem);
+      if (rank > 1)
+        e.shape.assign(dims.begin(), dims.end());
+      put_entry(*visit.archive, name, e, dims);
       return 0;
     }
   } // namespace

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace psmpm
 {
@@ -34,6 +35,174 @@ namespace psmpm
           for (const auto &[j, w] : from)
             to[j] += factor * w;
       }
+
+
+
+      /// The C^1 ties of degree 2: at every interior vertex, equal
+      /// one-sided derivatives of the two Bezier pieces.
+      void
+      make_quadratic_ties(const DoFHandler<1>       &dof_handler,
+                          AffineConstraints<double> &constraints)
+      {
+        // The shared triangulation keeps every cell, so both neighbours
+        // of a vertex and their cell DoFs are always at hand.
+        std::vector<types::global_dof_index> dofs(3), neighbor_dofs(3);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            for (const unsigned int f : cell->face_indices())
+              {
+                if (cell->at_boundary(f))
+                  continue;
+                // In 1D face f is vertex f; local DoF f is its vertex
+                // DoF.
+                const auto vertex_dof = dofs[f];
+                if (!constraints.can_store_line(vertex_dof) ||
+                    constraints.is_constrained(vertex_dof))
+                  continue;
+                const auto neighbor = cell->neighbor(f);
+                neighbor->get_dof_indices(neighbor_dofs);
+                const double h          = cell->measure(),
+                             h_neighbor = neighbor->measure();
+                // (c_v - c_L) / h_L = (c_R - c_v) / h_R.
+                constraints.add_line(vertex_dof);
+                constraints.add_entry(vertex_dof,
+                                      dofs[2],
+                                      h_neighbor / (h + h_neighbor));
+                constraints.add_entry(vertex_dof,
+                                      neighbor_dofs[2],
+                                      h / (h + h_neighbor));
+              }
+          }
+      }
+
+
+
+      /**
+       * The n + p B-spline coefficients d of degree p >= 3 on a mesh of n
+       * cells as combinations of the free layout DoFs, and the ties of the
+       * other DoFs (see BSpline::make_space_constraints()).
+       */
+      struct HigherDegreeTies
+      {
+        HigherDegreeTies(const unsigned int                     p,
+                         const std::vector<FullMatrix<double>> &extraction)
+          : p(p)
+          , n(extraction.size())
+          , extraction(extraction)
+          , cell_at(n)
+          , dofs(n, std::vector<types::global_dof_index>(p + 1))
+          , reversed(n)
+          , d(n + p)
+        {
+        }
+
+        /// Local DoF of Bernstein coefficient j of cell @p c counted from
+        /// the left.
+        unsigned int
+        row(const unsigned int c, const unsigned int j) const
+        {
+          return local_dof(reversed[c] ? p - j : j, p);
+        }
+
+        /// d from the free DoFs: the end vertex DoFs, then the interior
+        /// blocks of cells 0, p - 1, 2 (p - 1), ..., then the last block.
+        void
+        solve()
+        {
+          const auto first = cell_at[0], last = cell_at[n - 1];
+          d[0][dofs[first][row(first, 0)]]       = 1;
+          d[n + p - 1][dofs[last][row(last, p)]] = 1;
+          free_dofs.insert(dofs[first][row(first, 0)]);
+          free_dofs.insert(dofs[last][row(last, p)]);
+
+          // Interior blocks: d_{k+1..k+p-1} = A^{-1} b_interior.
+          unsigned int covered = 0; // B-splines 1..covered are known
+          for (unsigned int k = 0; k < n; k += p - 1)
+            {
+              const unsigned int c = cell_at[k];
+              FullMatrix<double> A(p - 1, p - 1);
+              for (unsigned int j = 1; j < p; ++j)
+                for (unsigned int i = 1; i < p; ++i)
+                  A(j - 1, i - 1) = extraction[c](row(c, j), i);
+              A.gauss_jordan();
+              for (unsigned int i = 1; i < p; ++i)
+                for (unsigned int j = 1; j < p; ++j)
+                  d[k + i][dofs[c][row(c, j)]] = A(i - 1, j - 1);
+              for (unsigned int j = 1; j < p; ++j)
+                free_dofs.insert(dofs[c][row(c, j)]);
+              covered = k + p - 1;
+            }
+          const unsigned int r = n + p - 2 - covered;
+          if (r > 0)
+            solve_last_block(r);
+        }
+
+        /// The last @p r unknown B-splines n + p - 1 - r .. n + p - 2
+        /// (offsets p - r .. p - 1 on the last cell, k = n - 1); free: the
+        /// Bernstein coefficients j = p - r .. p - 1.
+        void
+        solve_last_block(const unsigned int r)
+        {
+          const unsigned int c = cell_at[n - 1], k = n - 1;
+          FullMatrix<double> A(r, r);
+          for (unsigned int a = 0; a < r; ++a)
+            for (unsigned int i = 0; i < r; ++i)
+              A(a, i) = extraction[c](row(c, p - r + a), p - r + i);
+          A.gauss_jordan();
+          // Right-hand sides: b_j - sum over the known B-splines.
+          std::vector<Combination> rhs(r);
+          for (unsigned int a = 0; a < r; ++a)
+            {
+              const auto dof = dofs[c][row(c, p - r + a)];
+              rhs[a][dof]    = 1;
+              free_dofs.insert(dof);
+              for (unsigned int i = 0; i <= p; ++i)
+                if (i < p - r || i == p)
+                  add(rhs[a], -extraction[c](row(c, p - r + a), i), d[k + i]);
+            }
+          for (unsigned int i = 0; i < r; ++i)
+            for (unsigned int a = 0; a < r; ++a)
+              add(d[k + p - r + i], A(i, a), rhs[a]);
+        }
+
+        /// Ties: every other DoF is E d on (one of) its cell(s).
+        void
+        add_ties(AffineConstraints<double> &constraints) const
+        {
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              const unsigned int c = cell_at[k];
+              for (unsigned int j = 1; j <= p; ++j)
+                {
+                  // Vertex j = p is tied from the cell on its left; the
+                  // right end vertex is free.
+                  const auto dof = dofs[c][row(c, j)];
+                  if (free_dofs.count(dof) != 0 ||
+                      !constraints.can_store_line(dof) ||
+                      constraints.is_constrained(dof))
+                    continue;
+                  Combination tie;
+                  for (unsigned int i = 0; i <= p; ++i)
+                    add(tie, extraction[c](row(c, j), i), d[k + i]);
+                  constraints.add_line(dof);
+                  for (const auto &[target, w] : tie)
+                    if (w != 0)
+                      constraints.add_entry(dof, target, w);
+                }
+            }
+        }
+
+        const unsigned int                     p;
+        const unsigned int                     n;
+        const std::vector<FullMatrix<double>> &extraction;
+        /// The cell at each position from the left.
+        std::vector<unsigned int>                         cell_at;
+        std::vector<std::vector<types::global_dof_index>> dofs;
+        std::vector<bool>                                 reversed;
+        std::vector<Combination>                          d;
+        std::set<types::global_dof_index>                 free_dofs;
+      };
     } // namespace
 
     BSpline::BSpline()
@@ -258,37 +427,7 @@ namespace psmpm
         return;
       if (p == 2)
         {
-          // The shared triangulation keeps every cell, so both neighbours
-          // of a vertex and their cell DoFs are always at hand.
-          std::vector<types::global_dof_index> dofs(3), neighbor_dofs(3);
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            {
-              cell->get_dof_indices(dofs);
-              for (const unsigned int f : cell->face_indices())
-                {
-                  if (cell->at_boundary(f))
-                    continue;
-                  // In 1D face f is vertex f; local DoF f is its vertex
-                  // DoF.
-                  const auto vertex_dof = dofs[f];
-                  if (!constraints.can_store_line(vertex_dof) ||
-                      constraints.is_constrained(vertex_dof))
-                    continue;
-                  const auto neighbor = cell->neighbor(f);
-                  neighbor->get_dof_indices(neighbor_dofs);
-                  const double h          = cell->measure(),
-                               h_neighbor = neighbor->measure();
-                  // Equal one-sided derivatives of the two Bezier pieces:
-                  // (c_v - c_L) / h_L = (c_R - c_v) / h_R.
-                  constraints.add_line(vertex_dof);
-                  constraints.add_entry(vertex_dof,
-                                        dofs[2],
-                                        h_neighbor / (h + h_neighbor));
-                  constraints.add_entry(vertex_dof,
-                                        neighbor_dofs[2],
-                                        h / (h + h_neighbor));
-                }
-            }
+          make_quadratic_ties(dof_handler, constraints);
           return;
         }
 
@@ -311,98 +450,17 @@ namespace psmpm
       AssertThrow(extraction.size() == n,
                   ExcMessage("BSpline::make_space_constraints: call reinit() "
                              "with this mesh first."));
-      std::vector<unsigned int> cell_at(n);
+      HigherDegreeTies ties(p, extraction);
       for (unsigned int c = 0; c < n; ++c)
-        cell_at[position[c]] = c;
-      std::vector<std::vector<types::global_dof_index>> dofs(
-        n,
-        std::vector<types::global_dof_index>(p + 1));
-      std::vector<bool> reversed(n);
+        ties.cell_at[position[c]] = c;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           const unsigned int c = cell->active_cell_index();
-          cell->get_dof_indices(dofs[c]);
-          reversed[c] = cell_data[c].inverse_length < 0;
+          cell->get_dof_indices(ties.dofs[c]);
+          ties.reversed[c] = cell_data[c].inverse_length < 0;
         }
-      // Local DoF of Bernstein coefficient j counted from the left.
-      const auto row = [&](const unsigned int c, const unsigned int j) {
-        return local_dof(reversed[c] ? p - j : j, p);
-      };
-
-      std::vector<Combination>          d(n + p);
-      std::set<types::global_dof_index> free;
-      const auto first = cell_at[0], last = cell_at[n - 1];
-      d[0][dofs[first][row(first, 0)]]       = 1;
-      d[n + p - 1][dofs[last][row(last, p)]] = 1;
-      free.insert(dofs[first][row(first, 0)]);
-      free.insert(dofs[last][row(last, p)]);
-
-      // Interior blocks: d_{k+1..k+p-1} = A^{-1} b_interior.
-      unsigned int covered = 0; // B-splines 1..covered are known
-      for (unsigned int k = 0; k < n; k += p - 1)
-        {
-          const unsigned int c = cell_at[k];
-          FullMatrix<double> A(p - 1, p - 1);
-          for (unsigned int j = 1; j < p; ++j)
-            for (unsigned int i = 1; i < p; ++i)
-              A(j - 1, i - 1) = extraction[c](row(c, j), i);
-          A.gauss_jordan();
-          for (unsigned int i = 1; i < p; ++i)
-            for (unsigned int j = 1; j < p; ++j)
-              d[k + i][dofs[c][row(c, j)]] = A(i - 1, j - 1);
-          for (unsigned int j = 1; j < p; ++j)
-            free.insert(dofs[c][row(c, j)]);
-          covered = k + p - 1;
-        }
-      const unsigned int r = n + p - 2 - covered;
-      if (r > 0)
-        {
-          // Unknown: B-splines n + p - 1 - r .. n + p - 2 (offsets p - r
-          // .. p - 1 on the last cell, k = n - 1); free: the Bernstein
-          // coefficients j = p - r .. p - 1.
-          const unsigned int c = last, k = n - 1;
-          FullMatrix<double> A(r, r);
-          for (unsigned int a = 0; a < r; ++a)
-            for (unsigned int i = 0; i < r; ++i)
-              A(a, i) = extraction[c](row(c, p - r + a), p - r + i);
-          A.gauss_jordan();
-          // Right-hand sides: b_j - sum over the known B-splines.
-          std::vector<Combination> rhs(r);
-          for (unsigned int a = 0; a < r; ++a)
-            {
-              const auto dof = dofs[c][row(c, p - r + a)];
-              rhs[a][dof]    = 1;
-              free.insert(dof);
-              for (unsigned int i = 0; i <= p; ++i)
-                if (i < p - r || i == p)
-                  add(rhs[a], -extraction[c](row(c, p - r + a), i), d[k + i]);
-            }
-          for (unsigned int i = 0; i < r; ++i)
-            for (unsigned int a = 0; a < r; ++a)
-              add(d[k + p - r + i], A(i, a), rhs[a]);
-        }
-
-      // Ties: every other DoF is E d on (one of) its cell(s).
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          const unsigned int c = cell_at[k];
-          for (unsigned int j = 1; j <= p; ++j)
-            {
-              // Vertex j = p is tied from the cell on its left; the right
-              // end vertex is free.
-              const auto dof = dofs[c][row(c, j)];
-              if (free.count(dof) != 0 || !constraints.can_store_line(dof) ||
-                  constraints.is_constrained(dof))
-                continue;
-              Combination tie;
-              for (unsigned int i = 0; i <= p; ++i)
-                add(tie, extraction[c](row(c, j), i), d[k + i]);
-              constraints.add_line(dof);
-              for (const auto &[target, w] : tie)
-                if (w != 0)
-                  constraints.add_entry(dof, target, w);
-            }
-        }
+      ties.solve();
+      ties.add_ties(constraints);
     }
 
     void

@@ -215,6 +215,251 @@ namespace psmpm
               }
         return best_area < std::numeric_limits<double>::max();
       }
+
+
+
+      /**
+       * If face @p f of @p cell is on the boundary, the neighbours along
+       * it, oriented with the interior on the left: the vertex it leaves
+       * to (for the vertex at its start) and the vertex it arrives from
+       * (for the vertex at its end).
+       */
+      void
+      add_boundary_edge(const Triangulation<2>::active_cell_iterator &cell,
+                        const unsigned int                            f,
+                        std::vector<std::vector<Point<2>>> &arriving_from,
+                        std::vector<std::vector<Point<2>>> &leaving_to)
+      {
+        if (!cell->at_boundary(f))
+          return;
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            const unsigned int a = cell->vertex_index(k),
+                               b = cell->vertex_index((k + 1) % 3);
+            const auto face      = cell->face(f);
+            if ((face->vertex_index(0) == a && face->vertex_index(1) == b) ||
+                (face->vertex_index(0) == b && face->vertex_index(1) == a))
+              {
+                leaving_to[a].push_back(cell->vertex((k + 1) % 3));
+                arriving_from[b].push_back(cell->vertex(k));
+              }
+          }
+      }
+
+
+
+      /**
+       * The kind of vertex @p V from its boundary neighbours @p
+       * arriving_from and @p leaving_to, and the lines its control
+       * triangle must have as sides (@p fixed): the boundary tangent at a
+       * straight boundary vertex, both edges at a convex corner.
+       */
+      PowellSabin::VertexKind
+      classify_vertex(const Point<2>              &V,
+                      const std::vector<Point<2>> &arriving_from,
+                      const std::vector<Point<2>> &leaving_to,
+                      std::vector<Line>           &fixed)
+      {
+        using VertexKind = PowellSabin::VertexKind;
+        if (arriving_from.empty() && leaving_to.empty())
+          return VertexKind::interior;
+        if (arriving_from.size() != 1 || leaving_to.size() != 1)
+          return VertexKind::unaligned_boundary;
+        const Point<2>    &W1 = arriving_from[0];
+        const Point<2>    &W2 = leaving_to[0];
+        const Tensor<1, 2> n1 = outward_normal(W1, V);
+        const Tensor<1, 2> n2 = outward_normal(V, W2);
+        const double       turn =
+          cross(V - W1, W2 - V) / ((V - W1).norm() * (W2 - V).norm());
+        if (std::abs(turn) <= 1e-10)
+          {
+            const Tensor<1, 2> n = (n1 + n2) / (n1 + n2).norm();
+            fixed.push_back(Line{n, n * V});
+            return VertexKind::straight_boundary;
+          }
+        if (turn > 0)
+          {
+            fixed.push_back(Line{n1, n1 * V});
+            fixed.push_back(Line{n2, n2 * V});
+            return VertexKind::corner;
+          }
+        return VertexKind::unaligned_boundary;
+      }
+
+
+
+      /**
+       * The triplets of vertex @p v at @p V from its control triangle
+       * @p control_points: value and gradient at V of the linear functions
+       * that are 1 at one control point and 0 at the other two. Checks
+       * that the triangle is not degenerate and holds every PS point of
+       * @p points (@p scale: their largest distance from V).
+       */
+      void
+      set_triplets(const std::array<Point<2>, 3>       &control_points,
+                   const std::vector<Point<2>>         &points,
+                   const Point<2>                      &V,
+                   const unsigned int                   v,
+                   const double                         scale,
+                   std::array<PowellSabin::Triplet, 3> &triplets)
+      {
+        const double area = Mesh::signed_area(control_points);
+        AssertThrow(area > 1e-12 * scale * scale,
+                    ExcMessage("Powell-Sabin: degenerate control triangle "
+                               "at " +
+                               describe_vertex(v, V) + "."));
+        // Relative to V: in absolute coordinates the constant of the
+        // map is of size |V|/h and cancellation would cost digits.
+        std::array<Point<2>, 3> local;
+        for (unsigned int q = 0; q < 3; ++q)
+          local[q] = Point<2>(control_points[q] - V);
+        const auto bary = Mesh::barycentric_map(local);
+        for (unsigned int q = 0; q < 3; ++q)
+          triplets[q] =
+            PowellSabin::Triplet{bary.constant[q], bary.gradient[q]};
+
+        // Non-negativity of the basis is equivalent to every PS point
+        // lying in the control triangle: check it rather than trust the
+        // geometry of a sliver.
+        for (const auto &p : points)
+          {
+            const auto l = bary(Point<2>(p - V));
+            for (unsigned int q = 0; q < 3; ++q)
+              AssertThrow(l[q] > -1e-10,
+                          ExcMessage("Powell-Sabin: the control triangle of " +
+                                     describe_vertex(v, V) +
+                                     " does not contain all its PS points; "
+                                     "the basis would not be non-negative."));
+          }
+      }
+
+
+
+      /// The points of triangle @p t relative to @p o.
+      std::array<Point<2>, 3>
+      to_local(const std::array<Point<2>, 3> &t, const Point<2> &o)
+      {
+        return std::array<Point<2>, 3>{
+          {Point<2>(t[0] - o), Point<2>(t[1] - o), Point<2>(t[2] - o)}};
+      }
+
+
+
+      /**
+       * The quadratic Bernstein basis in monomials of (l0, l1), with l2 =
+       * 1 - l0 - l1: row j holds the coefficients of b_j on 1, l0, l1,
+       * l0^2, l0 l1, l1^2. l_k = A_k + G_k . (l0, l1), and l_a l_b has the
+       * coefficients A_a A_b, A_a G_b + A_b G_a, G_a G_b (symmetrised for
+       * l0 l1).
+       */
+      std::array<std::array<double, 6>, 6>
+      bernstein_to_monomials()
+      {
+        constexpr double A[3]    = {0, 0, 1};
+        constexpr double G[3][2] = {{1, 0}, {0, 1}, {-1, -1}};
+        // Bernstein b_j = w_j l_{pa_j} l_{pb_j}, in the Bezier point
+        // order of sub_triangle_points (P1, P2, P3, mid P1P2, ...).
+        constexpr unsigned int               pa[6] = {0, 1, 2, 0, 1, 2};
+        constexpr unsigned int               pb[6] = {0, 1, 2, 1, 2, 0};
+        constexpr double                     w[6]  = {1, 1, 1, 2, 2, 2};
+        std::array<std::array<double, 6>, 6> m;
+        for (unsigned int j = 0; j < 6; ++j)
+          {
+            const unsigned int a = pa[j], b = pb[j];
+            m[j][0] = w[j] * A[a] * A[b];
+            m[j][1] = w[j] * (A[a] * G[b][0] + A[b] * G[a][0]);
+            m[j][2] = w[j] * (A[a] * G[b][1] + A[b] * G[a][1]);
+            m[j][3] = w[j] * G[a][0] * G[b][0];
+            m[j][4] = w[j] * (G[a][0] * G[b][1] + G[a][1] * G[b][0]);
+            m[j][5] = w[j] * G[a][1] * G[b][1];
+          }
+        return m;
+      }
+
+
+
+      /// Per constrained vertex: its three DoFs and the rows
+      /// (coefficients on c_0..c_2, right-hand side).
+      struct VertexRows
+      {
+        std::array<types::global_dof_index, 3> dofs;
+        std::vector<std::array<double, 4>>     rows;
+      };
+
+
+
+      /**
+       * Gauss-Jordan elimination with full pivoting on the m x 3 system
+       * @p M (rows scaled to largest coefficient 1 first, so that one rank
+       * tolerance fits values and derivatives alike). Returns its rank;
+       * @p column holds the order of the unknowns after pivoting.
+       */
+      unsigned int
+      eliminate(std::vector<std::array<double, 4>> &M,
+                std::array<unsigned int, 3>        &column)
+      {
+        for (auto &row : M)
+          {
+            const double s =
+              std::max({std::abs(row[0]), std::abs(row[1]), std::abs(row[2])});
+            for (auto &x : row)
+              x /= s;
+          }
+        column            = {{0, 1, 2}};
+        unsigned int rank = 0;
+        for (; rank < std::min<std::size_t>(3, M.size()); ++rank)
+          {
+            unsigned int pi = rank, pj = rank;
+            for (unsigned int i = rank; i < M.size(); ++i)
+              for (unsigned int j = rank; j < 3; ++j)
+                if (std::abs(M[i][column[j]]) > std::abs(M[pi][column[pj]]))
+                  {
+                    pi = i;
+                    pj = j;
+                  }
+            if (std::abs(M[pi][column[pj]]) < 1e-10)
+              break;
+            std::swap(M[rank], M[pi]);
+            std::swap(column[rank], column[pj]);
+            const double p = M[rank][column[rank]];
+            for (auto &x : M[rank])
+              x /= p;
+            for (unsigned int i = 0; i < M.size(); ++i)
+              if (i != rank)
+                {
+                  const double f = M[i][column[rank]];
+                  for (unsigned int j = 0; j < 4; ++j)
+                    M[i][j] -= f * M[rank][j];
+                }
+          }
+        return rank;
+      }
+
+
+
+      /// The constraints of the vertex @p r from its rows: c_{column[i]} =
+      /// rhs_i - sum_{free j} M[i][j] c_j for i < rank.
+      void
+      add_vertex_constraints(VertexRows                &r,
+                             AffineConstraints<double> &constraints)
+      {
+        std::array<unsigned int, 3> column;
+        const unsigned int          rank = eliminate(r.rows, column);
+        const auto                 &M    = r.rows;
+        for (unsigned int i = 0; i < rank; ++i)
+          {
+            const auto dof = r.dofs[column[i]];
+            if (!constraints.can_store_line(dof) ||
+                constraints.is_constrained(dof))
+              continue;
+            constraints.add_line(dof);
+            for (unsigned int j = rank; j < 3; ++j)
+              if (std::abs(M[i][column[j]]) > 1e-12)
+                constraints.add_entry(dof, r.dofs[column[j]], -M[i][column[j]]);
+            if (std::abs(M[i][3]) > 1e-14)
+              constraints.set_inhomogeneity(dof, M[i][3]);
+          }
+      }
     } // namespace
 
     PowellSabin::PowellSabin()
@@ -273,21 +518,7 @@ namespace psmpm
               list.push_back(0.5 * (V + c.edge_points[(k + 2) % 3]));
             }
           for (const unsigned int f : cell->face_indices())
-            if (cell->at_boundary(f))
-              for (unsigned int k = 0; k < 3; ++k)
-                {
-                  const unsigned int a = cell->vertex_index(k),
-                                     b = cell->vertex_index((k + 1) % 3);
-                  const auto face      = cell->face(f);
-                  if ((face->vertex_index(0) == a &&
-                       face->vertex_index(1) == b) ||
-                      (face->vertex_index(0) == b &&
-                       face->vertex_index(1) == a))
-                    {
-                      leaving_to[a].push_back(cell->vertex((k + 1) % 3));
-                      arriving_from[b].push_back(cell->vertex(k));
-                    }
-                }
+            add_boundary_edge(cell, f, arriving_from, leaving_to);
         }
 
       const std::vector<bool> &used     = tria.get_used_vertices();
@@ -304,34 +535,8 @@ namespace psmpm
 
           VertexData       &data = vertex_data[v];
           std::vector<Line> fixed;
-          if (arriving_from[v].empty() && leaving_to[v].empty())
-            data.kind = VertexKind::interior;
-          else if (arriving_from[v].size() == 1 && leaving_to[v].size() == 1)
-            {
-              const Point<2>    &W1 = arriving_from[v][0];
-              const Point<2>    &W2 = leaving_to[v][0];
-              const Tensor<1, 2> n1 = outward_normal(W1, V);
-              const Tensor<1, 2> n2 = outward_normal(V, W2);
-              const double       turn =
-                cross(V - W1, W2 - V) / ((V - W1).norm() * (W2 - V).norm());
-              if (std::abs(turn) <= 1e-10)
-                {
-                  data.kind            = VertexKind::straight_boundary;
-                  const Tensor<1, 2> n = (n1 + n2) / (n1 + n2).norm();
-                  fixed.push_back(Line{n, n * V});
-                }
-              else if (turn > 0)
-                {
-                  data.kind = VertexKind::corner;
-                  fixed.push_back(Line{n1, n1 * V});
-                  fixed.push_back(Line{n2, n2 * V});
-                }
-              else
-                data.kind = VertexKind::unaligned_boundary;
-            }
-          else
-            data.kind = VertexKind::unaligned_boundary;
-
+          data.kind =
+            classify_vertex(V, arriving_from[v], leaving_to[v], fixed);
           const bool found = smallest_control_triangle(points,
                                                        fixed,
                                                        scale,
@@ -340,37 +545,7 @@ namespace psmpm
                       ExcMessage("Powell-Sabin: no control triangle contains "
                                  "the PS points of " +
                                  describe_vertex(v, V) + "."));
-
-          // The triplets: value and gradient at V of the linear functions
-          // that are 1 at one control point and 0 at the other two.
-          const double area = Mesh::signed_area(data.control_points);
-          AssertThrow(area > 1e-12 * scale * scale,
-                      ExcMessage("Powell-Sabin: degenerate control triangle "
-                                 "at " +
-                                 describe_vertex(v, V) + "."));
-          // Relative to V: in absolute coordinates the constant of the
-          // map is of size |V|/h and cancellation would cost digits.
-          std::array<Point<2>, 3> local;
-          for (unsigned int q = 0; q < 3; ++q)
-            local[q] = Point<2>(data.control_points[q] - V);
-          const auto bary = Mesh::barycentric_map(local);
-          for (unsigned int q = 0; q < 3; ++q)
-            data.triplets[q] = Triplet{bary.constant[q], bary.gradient[q]};
-
-          // Non-negativity of the basis is equivalent to every PS point
-          // lying in the control triangle: check it rather than trust the
-          // geometry of a sliver.
-          for (const auto &p : points)
-            {
-              const auto l = bary(Point<2>(p - V));
-              for (unsigned int q = 0; q < 3; ++q)
-                AssertThrow(l[q] > -1e-10,
-                            ExcMessage(
-                              "Powell-Sabin: the control triangle of " +
-                              describe_vertex(v, V) +
-                              " does not contain all its PS points; the "
-                              "basis would not be non-negative."));
-            }
+          set_triplets(data.control_points, points, V, v, scale, data.triplets);
         }
     }
 
@@ -396,6 +571,7 @@ namespace psmpm
         for (unsigned int k = 0; k < 3; ++k)
           cell_vertices[cell->active_cell_index()][k] = cell->vertex_index(k);
 
+      const std::array<std::array<double, 6>, 6> m = bernstein_to_monomials();
       for (const auto &cell : tria.active_cell_iterators())
         {
           const unsigned int index = cell->active_cell_index();
@@ -406,12 +582,7 @@ namespace psmpm
 
           // Affine maps relative to the cell's first vertex keep their
           // constants of order one whatever the cell's position.
-          d.origin            = c.vertices[0];
-          const auto to_local = [](const std::array<Point<2>, 3> &t,
-                                   const Point<2>                &o) {
-            return std::array<Point<2>, 3>{
-              {Point<2>(t[0] - o), Point<2>(t[1] - o), Point<2>(t[2] - o)}};
-          };
+          d.origin = c.vertices[0];
           const auto macro =
             Mesh::barycentric_map(to_local(c.vertices, d.origin));
           for (unsigned int k = 0; k < 3; ++k)
@@ -451,27 +622,7 @@ namespace psmpm
                                             cell->vertex(i / 3)) +
                             " in cell " + std::to_string(index) + "."));
 
-          // Bernstein form -> monomials in (l0, l1), with l2 = 1 - l0 - l1:
-          // l_k = A_k + G_k . (l0, l1), and l_a l_b has the coefficients
-          // A_a A_b, A_a G_b + A_b G_a, G_a G_b (symmetrised for l0 l1).
-          constexpr double A[3]    = {0, 0, 1};
-          constexpr double G[3][2] = {{1, 0}, {0, 1}, {-1, -1}};
-          // Bernstein b_j = w_j l_{pa_j} l_{pb_j}, in the Bezier point
-          // order of sub_triangle_points (P1, P2, P3, mid P1P2, ...).
-          constexpr unsigned int pa[6] = {0, 1, 2, 0, 1, 2};
-          constexpr unsigned int pb[6] = {0, 1, 2, 1, 2, 0};
-          constexpr double       w[6]  = {1, 1, 1, 2, 2, 2};
-          double                 m[6][6];
-          for (unsigned int j = 0; j < 6; ++j)
-            {
-              const unsigned int a = pa[j], b = pb[j];
-              m[j][0] = w[j] * A[a] * A[b];
-              m[j][1] = w[j] * (A[a] * G[b][0] + A[b] * G[a][0]);
-              m[j][2] = w[j] * (A[a] * G[b][1] + A[b] * G[a][1]);
-              m[j][3] = w[j] * G[a][0] * G[b][0];
-              m[j][4] = w[j] * (G[a][0] * G[b][1] + G[a][1] * G[b][0]);
-              m[j][5] = w[j] * G[a][1] * G[b][1];
-            }
+          // Bernstein form -> monomials in (l0, l1) on each sub-triangle.
           for (unsigned int s = 0; s < 6; ++s)
             {
               auto      &q = d.sub[s];
@@ -733,13 +884,6 @@ namespace psmpm
       const Function<2>                  &g,
       AffineConstraints<double>          &constraints) const
     {
-      // Per constrained vertex: its three DoFs and the rows
-      // (coefficients on c_0..c_2, right-hand side).
-      struct VertexRows
-      {
-        std::array<types::global_dof_index, 3> dofs;
-        std::vector<std::array<double, 4>>     rows;
-      };
       std::map<unsigned int, VertexRows> vertex_rows;
       AssertThrow(vertex_data.size() ==
                     dof_handler.get_triangulation().n_vertices(),
@@ -789,63 +933,7 @@ namespace psmpm
         }
 
       for (auto &entry : vertex_rows)
-        {
-          VertexRows &r = entry.second;
-          // Scale rows so that one rank tolerance fits values and
-          // derivatives alike.
-          for (auto &row : r.rows)
-            {
-              const double s = std::max(
-                {std::abs(row[0]), std::abs(row[1]), std::abs(row[2])});
-              for (auto &x : row)
-                x /= s;
-            }
-          // Gauss-Jordan elimination with full pivoting on the m x 3 system.
-          std::array<unsigned int, 3> column = {{0, 1, 2}};
-          unsigned int                rank   = 0;
-          auto                       &M      = r.rows;
-          for (; rank < std::min<std::size_t>(3, M.size()); ++rank)
-            {
-              unsigned int pi = rank, pj = rank;
-              for (unsigned int i = rank; i < M.size(); ++i)
-                for (unsigned int j = rank; j < 3; ++j)
-                  if (std::abs(M[i][column[j]]) > std::abs(M[pi][column[pj]]))
-                    {
-                      pi = i;
-                      pj = j;
-                    }
-              if (std::abs(M[pi][column[pj]]) < 1e-10)
-                break;
-              std::swap(M[rank], M[pi]);
-              std::swap(column[rank], column[pj]);
-              const double p = M[rank][column[rank]];
-              for (auto &x : M[rank])
-                x /= p;
-              for (unsigned int i = 0; i < M.size(); ++i)
-                if (i != rank)
-                  {
-                    const double f = M[i][column[rank]];
-                    for (unsigned int j = 0; j < 4; ++j)
-                      M[i][j] -= f * M[rank][j];
-                  }
-            }
-          // c_{column[i]} = rhs_i - sum_{free j} M[i][j] c_j for i < rank.
-          for (unsigned int i = 0; i < rank; ++i)
-            {
-              const auto dof = r.dofs[column[i]];
-              if (!constraints.can_store_line(dof) ||
-                  constraints.is_constrained(dof))
-                continue;
-              constraints.add_line(dof);
-              for (unsigned int j = rank; j < 3; ++j)
-                if (std::abs(M[i][column[j]]) > 1e-12)
-                  constraints.add_entry(dof,
-                                        r.dofs[column[j]],
-                                        -M[i][column[j]]);
-              if (std::abs(M[i][3]) > 1e-14)
-                constraints.set_inhomogeneity(dof, M[i][3]);
-            }
-        }
+        add_vertex_constraints(entry.second, constraints);
     }
 
     std::vector<Point<2>>

@@ -365,20 +365,13 @@ namespace psmpm
                                std::to_string(first_cw) +
                                " clockwise): the mesh is inverted or folded."));
       }
-    } // namespace
 
-    template <int dim>
-    std::map<std::string, types::boundary_id>
-    MeshGenerator<dim>::read_gmsh(Triangulation<2>  &tria,
-                                  const std::string &filename)
-    {
-      check_msh(filename, "Mesh/File = " + filename);
-      std::ifstream in(filename);
-      AssertThrow(in.good(),
-                  ExcMessage("Mesh/File = " + filename +
-                             ": cannot open the mesh file."));
 
-      // The format line: psmpm reads ASCII files only.
+
+      /// The format line of the .msh stream @p in: psmpm reads ASCII
+      /// files only.
+      void
+      check_ascii(std::istream &in, const std::string &filename)
       {
         std::string line;
         std::getline(in, line);
@@ -396,31 +389,131 @@ namespace psmpm
                                    "out.msh)."));
           }
       }
+
+
+
+      /**
+       * The boundaries named in the $PhysicalNames of @p in:
+       * "$PhysicalNames / n / dim tag \"name\"". A name is one boundary:
+       * defined once, with a tag other than 0 (deal.II gives every edge
+       * without a physical tag boundary id 0).
+       */
+      std::map<std::string, types::boundary_id>
+      read_boundary_names(std::istream &in, const std::string &filename)
+      {
+        std::map<std::string, types::boundary_id> physical_names;
+        for (const auto &[entity_dim, tag, name] : read_physical_names(in))
+          if (entity_dim == 1)
+            {
+              AssertThrow(physical_names.count(name) == 0,
+                          ExcMessage("Mesh/File = " + filename +
+                                     ": the physical name \"" + name +
+                                     "\" is defined twice (tags " +
+                                     std::to_string(physical_names[name]) +
+                                     " and " + std::to_string(tag) + ")."));
+              AssertThrow(tag > 0,
+                          ExcMessage("Mesh/File = " + filename +
+                                     ": the physical name \"" + name +
+                                     "\" has tag " + std::to_string(tag) +
+                                     "; boundary tags must be positive (0 is "
+                                     "the boundary of edges without a "
+                                     "physical group)."));
+              physical_names[name] = tag;
+            }
+        return physical_names;
+      }
+
+
+
+      /// The cells read into @p tria: some, all triangles, none inverted.
+      void
+      check_cells(const Triangulation<2> &tria, const std::string &filename)
+      {
+        AssertThrow(tria.n_active_cells() > 0,
+                    ExcMessage("Mesh/File = " + filename + ": no cells."));
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            AssertThrow(cell->reference_cell() == ReferenceCells::Triangle,
+                        ExcMessage("Mesh/File = " + filename +
+                                   ": psmpm needs a mesh of triangles only."));
+            AssertThrow(cell->measure() > 0,
+                        ExcMessage("Mesh/File = " + filename + ": cell " +
+                                   std::to_string(cell->active_cell_index()) +
+                                   " is inverted (clockwise vertices)."));
+          }
+      }
+
+
+
+      /**
+       * Boundary edges of @p tria: every boundary of @p physical_names has
+       * some, and no two boundary edges leave a vertex in the same
+       * direction (that is a hanging node: a vertex inside an edge of the
+       * neighbouring cell, whose edges then all count as boundary).
+       */
+      void
+      check_boundary_edges(
+        const Triangulation<2>                          &tria,
+        const std::map<std::string, types::boundary_id> &physical_names,
+        const std::string                               &filename)
+      {
+        std::map<types::boundary_id, unsigned int>        edges_of;
+        std::map<unsigned int, std::vector<Tensor<1, 2>>> directions;
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const auto face = cell->face(f);
+                ++edges_of[face->boundary_id()];
+                for (unsigned int v = 0; v < 2; ++v)
+                  {
+                    const Tensor<1, 2> d =
+                      face->vertex(1 - v) - face->vertex(v);
+                    auto &list = directions[face->vertex_index(v)];
+                    for (const auto &e : list)
+                      {
+                        const double cross = e[0] * d[1] - e[1] * d[0];
+                        AssertThrow(
+                          !(e * d > 0 &&
+                            std::abs(cross) <= 1e-10 * e.norm() * d.norm()),
+                          ExcMessage(
+                            "Mesh/File = " + filename +
+                            ": the mesh is not conforming at the vertex (" +
+                            std::to_string(face->vertex(v)[0]) + ", " +
+                            std::to_string(face->vertex(v)[1]) +
+                            "): two edges leave it in the same direction (a "
+                            "hanging node: a vertex inside the edge of a "
+                            "neighbouring triangle). psmpm needs a "
+                            "conforming mesh."));
+                      }
+                    list.push_back(d);
+                  }
+              }
+        for (const auto &name : physical_names)
+          AssertThrow(edges_of.count(name.second) > 0,
+                      ExcMessage(
+                        "Mesh/File = " + filename + ": the boundary \"" +
+                        name.first + "\" (tag " + std::to_string(name.second) +
+                        ") has no edges on the boundary of the mesh."));
+      }
+    } // namespace
+
+    template <int dim>
+    std::map<std::string, types::boundary_id>
+    MeshGenerator<dim>::read_gmsh(Triangulation<2>  &tria,
+                                  const std::string &filename)
+    {
+      check_msh(filename, "Mesh/File = " + filename);
+      std::ifstream in(filename);
+      AssertThrow(in.good(),
+                  ExcMessage("Mesh/File = " + filename +
+                             ": cannot open the mesh file."));
+      // Each check reads the stream from its start.
+      check_ascii(in, filename);
       in.clear();
       in.seekg(0);
-
-      // Physical names: "$PhysicalNames / n / dim tag \"name\"". A name
-      // is one boundary: defined once, with a tag other than 0 (deal.II
-      // gives every edge without a physical tag boundary id 0).
-      std::map<std::string, types::boundary_id> physical_names;
-      for (const auto &[entity_dim, tag, name] : read_physical_names(in))
-        if (entity_dim == 1)
-          {
-            AssertThrow(physical_names.count(name) == 0,
-                        ExcMessage("Mesh/File = " + filename +
-                                   ": the physical name \"" + name +
-                                   "\" is defined twice (tags " +
-                                   std::to_string(physical_names[name]) +
-                                   " and " + std::to_string(tag) + ")."));
-            AssertThrow(tag > 0,
-                        ExcMessage("Mesh/File = " + filename +
-                                   ": the physical name \"" + name +
-                                   "\" has tag " + std::to_string(tag) +
-                                   "; boundary tags must be positive (0 is "
-                                   "the boundary of edges without a "
-                                   "physical group)."));
-            physical_names[name] = tag;
-          }
+      const std::map<std::string, types::boundary_id> physical_names =
+        read_boundary_names(in, filename);
       in.clear();
       in.seekg(0);
       check_orientation(in, filename);
@@ -428,60 +521,8 @@ namespace psmpm
       in.seekg(0);
 
       read_cells(in, tria, "Mesh/File = " + filename);
-      AssertThrow(tria.n_active_cells() > 0,
-                  ExcMessage("Mesh/File = " + filename + ": no cells."));
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          AssertThrow(cell->reference_cell() == ReferenceCells::Triangle,
-                      ExcMessage("Mesh/File = " + filename +
-                                 ": psmpm needs a mesh of triangles only."));
-          AssertThrow(cell->measure() > 0,
-                      ExcMessage("Mesh/File = " + filename + ": cell " +
-                                 std::to_string(cell->active_cell_index()) +
-                                 " is inverted (clockwise vertices)."));
-        }
-
-      // Boundary edges: every named boundary has some, and no two
-      // boundary edges leave a vertex in the same direction (that is a
-      // hanging node: a vertex inside an edge of the neighbouring cell,
-      // whose edges then all count as boundary).
-      std::map<types::boundary_id, unsigned int>        edges_of;
-      std::map<unsigned int, std::vector<Tensor<1, 2>>> directions;
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const auto face = cell->face(f);
-              ++edges_of[face->boundary_id()];
-              for (unsigned int v = 0; v < 2; ++v)
-                {
-                  const Tensor<1, 2> d = face->vertex(1 - v) - face->vertex(v);
-                  auto              &list = directions[face->vertex_index(v)];
-                  for (const auto &e : list)
-                    {
-                      const double cross = e[0] * d[1] - e[1] * d[0];
-                      AssertThrow(
-                        !(e * d > 0 &&
-                          std::abs(cross) <= 1e-10 * e.norm() * d.norm()),
-                        ExcMessage(
-                          "Mesh/File = " + filename +
-                          ": the mesh is not conforming at the vertex (" +
-                          std::to_string(face->vertex(v)[0]) + ", " +
-                          std::to_string(face->vertex(v)[1]) +
-                          "): two edges leave it in the same direction (a "
-                          "hanging node: a vertex inside the edge of a "
-                          "neighbouring triangle). psmpm needs a conforming "
-                          "mesh."));
-                    }
-                  list.push_back(d);
-                }
-            }
-      for (const auto &name : physical_names)
-        AssertThrow(edges_of.count(name.second) > 0,
-                    ExcMessage("Mesh/File = " + filename + ": the boundary \"" +
-                               name.first + "\" (tag " +
-                               std::to_string(name.second) +
-                               ") has no edges on the boundary of the mesh."));
+      check_cells(tria, filename);
+      check_boundary_edges(tria, physical_names, filename);
       return physical_names;
     }
 
