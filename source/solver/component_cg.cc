@@ -259,61 +259,79 @@ namespace psmpm
         multiply(M, *source, *q, columns, v, v_q);
     }
 
-    ComponentCG::Result
-    ComponentCG::solve(
-      const Epetra_CrsMatrix                       &M,
-      const std::vector<const VertexBlockJacobi *> &preconditioners,
-      const std::vector<std::vector<unsigned int>> &fixed,
-      Epetra_MultiVector                           &x,
-      const Epetra_MultiVector                     &b,
-      const double                                  tolerance,
-      const std::vector<double>                    &step_tolerances,
-      const unsigned int                            max_iterations)
+    /// The per-column state of the CG recurrences of one solve.
+    struct ComponentCG::Recurrence
     {
-      const unsigned int n_columns = b.NumVectors();
-      const unsigned int n         = b.MyLength();
-      AssertThrow(preconditioners.size() == n_columns &&
-                    fixed.size() == n_columns &&
-                    step_tolerances.size() == n_columns &&
-                    x.NumVectors() == int(n_columns),
-                  ExcMessage("ComponentCG: one preconditioner, fixed set "
-                             "and solution column per right-hand side"));
-      if (!r || r->NumVectors() != int(n_columns) || !r->Map().SameAs(b.Map()))
+      explicit Recurrence(const unsigned int n_columns)
+        : rz(n_columns)
+        , rz_old(n_columns)
+        , alpha(n_columns, 0.)
+        , alpha_old(n_columns, 0.)
+        , beta(n_columns, 0.)
+        , eigen_beta_alpha(n_columns, 0.)
+        , limit(n_columns)
+        , local(2 * n_columns)
+        , global(2 * n_columns)
+        , active(n_columns)
+        , diagonal(n_columns)
+        , offdiagonal(n_columns)
+      {
+      }
+
+      std::vector<double> rz, rz_old, alpha, alpha_old, beta, eigen_beta_alpha,
+        limit;
+      /// This rank's and all ranks' sums of the step.
+      std::vector<double> local, global;
+      std::vector<char>   active;
+      unsigned int        n_active = 0;
+      /// The active columns of the step.
+      std::vector<int> columns;
+      /// The Lanczos matrix of each column (condition estimate).
+      std::vector<std::vector<double>> diagonal, offdiagonal;
+    };
+
+    void
+    ComponentCG::allocate(const Epetra_MultiVector &b)
+    {
+      const int n_columns = b.NumVectors();
+      if (!r || r->NumVectors() != n_columns || !r->Map().SameAs(b.Map()))
         {
           r = std::make_unique<Epetra_MultiVector>(b.Map(), n_columns, false);
           z = std::make_unique<Epetra_MultiVector>(b.Map(), n_columns, false);
           p = std::make_unique<Epetra_MultiVector>(b.Map(), n_columns, false);
           q = std::make_unique<Epetra_MultiVector>(b.Map(), n_columns, false);
         }
-      const Epetra_Comm &comm = M.Comm();
+    }
 
-      Result result;
-      result.iterations.assign(n_columns, 0);
-      std::vector<double> rz(n_columns), rz_old(n_columns),
-        alpha(n_columns, 0.), alpha_old(n_columns, 0.), beta(n_columns, 0.),
-        eigen_beta_alpha(n_columns, 0.), limit(n_columns);
-      std::vector<double> local(2 * n_columns), global(2 * n_columns);
-      std::vector<char>   active(n_columns);
-      std::vector<std::vector<double>> diagonal(n_columns),
-        offdiagonal(n_columns);
-
+    void
+    ComponentCG::start(
+      const Epetra_CrsMatrix                       &M,
+      const std::vector<const VertexBlockJacobi *> &preconditioners,
+      const std::vector<std::vector<unsigned int>> &fixed,
+      const Epetra_MultiVector                     &x,
+      const Epetra_MultiVector                     &b,
+      const double                                  tolerance,
+      const std::vector<double>                    &step_tolerances,
+      Recurrence                                   &s)
+    {
+      const unsigned int n_columns = b.NumVectors();
+      const unsigned int n         = b.MyLength();
       // r = b - M x (fixed rows zero), z = B r; reduce ||b||^2, ||r||^2
       // and r.z together. A zero guess needs no product.
-      std::vector<int> columns;
-      bool             zero_guess = true;
+      bool zero_guess = true;
       for (unsigned int d = 0; d < n_columns; ++d)
         {
-          columns.push_back(d);
+          s.columns.push_back(d);
           const double *xd = x[d];
           for (unsigned int i = 0; i < n && zero_guess; ++i)
             zero_guess = xd[i] == 0;
         }
       // Decided over all ranks: the product is collective.
       int zero_here = zero_guess, zero_everywhere = 1;
-      comm.MinAll(&zero_here, &zero_everywhere, 1);
+      M.Comm().MinAll(&zero_here, &zero_everywhere, 1);
       zero_guess = zero_everywhere;
       if (!zero_guess)
-        product(M, x, columns, local.data());
+        product(M, x, s.columns, s.local.data());
       std::vector<double> r_b(3 * n_columns), global_r_b(3 * n_columns);
       for (unsigned int d = 0; d < n_columns; ++d)
         {
@@ -332,93 +350,145 @@ namespace psmpm
           preconditioners[d]->vmult(zd, rd, r_b[3 * d], r_b[3 * d + 1]);
           r_b[3 * d + 2] = zero_guess ? r_b[3 * d] : dot(bd, bd, n);
         }
-      comm.SumAll(r_b.data(), global_r_b.data(), 3 * n_columns);
-      unsigned int n_active = 0;
+      M.Comm().SumAll(r_b.data(), global_r_b.data(), 3 * n_columns);
       for (unsigned int d = 0; d < n_columns; ++d)
         {
           const double residual = std::sqrt(global_r_b[3 * d]);
-          limit[d]              = tolerance * std::sqrt(global_r_b[3 * d + 2]);
+          s.limit[d]            = tolerance * std::sqrt(global_r_b[3 * d + 2]);
           // A warm start's residual is what the step changed; the solve
           // need not be more accurate than a fraction of that.
           if (!zero_guess)
-            limit[d] = std::max(limit[d], step_tolerances[d] * residual);
-          rz[d]                 = global_r_b[3 * d + 1];
+            s.limit[d] = std::max(s.limit[d], step_tolerances[d] * residual);
+          s.rz[d] = global_r_b[3 * d + 1];
           // SolverControl's test at step 0: ||r|| <= limit (a zero
           // right-hand side with a zero guess has nothing to solve).
-          active[d] = !(residual <= limit[d]);
-          n_active += active[d];
+          s.active[d] = !(residual <= s.limit[d]);
+          s.n_active += s.active[d];
         }
+    }
 
-      for (unsigned int it = 1; n_active > 0; ++it)
-        {
-          // p = z + beta p on the active columns.
-          columns.clear();
-          for (unsigned int d = 0; d < n_columns; ++d)
-            if (active[d])
+    void
+    ComponentCG::update_directions(const unsigned int it, Recurrence &s)
+    {
+      // p = z + beta p on the active columns.
+      const unsigned int n = p->MyLength();
+      s.columns.clear();
+      for (unsigned int d = 0; d < s.active.size(); ++d)
+        if (s.active[d])
+          {
+            s.columns.push_back(d);
+            double       *pd = (*p)[d];
+            const double *zd = (*z)[d];
+            if (it == 1)
+              std::copy(zd, zd + n, pd);
+            else
               {
-                columns.push_back(d);
-                double       *pd = (*p)[d];
-                const double *zd = (*z)[d];
-                if (it == 1)
-                  std::copy(zd, zd + n, pd);
-                else
-                  {
-                    beta[d] = rz[d] / rz_old[d];
-                    for (unsigned int i = 0; i < n; ++i)
-                      pd[i] = zd[i] + beta[d] * pd[i];
-                  }
+                s.beta[d] = s.rz[d] / s.rz_old[d];
+                for (unsigned int i = 0; i < n; ++i)
+                  pd[i] = zd[i] + s.beta[d] * pd[i];
               }
-          // q = M p with p . q of every column (p is zero on fixed rows,
-          // so the rows of q that the mask zeroes add nothing).
-          product(M, *p, columns, local.data());
-          for (const int d : columns)
+          }
+    }
+
+    void
+    ComponentCG::iterate(
+      const Epetra_CrsMatrix                       &M,
+      const std::vector<const VertexBlockJacobi *> &preconditioners,
+      const std::vector<std::vector<unsigned int>> &fixed,
+      Epetra_MultiVector                           &x,
+      Recurrence                                   &s)
+    {
+      const unsigned int n_columns = s.active.size();
+      const unsigned int n         = p->MyLength();
+      // q = M p with p . q of every column (p is zero on fixed rows,
+      // so the rows of q that the mask zeroes add nothing).
+      product(M, *p, s.columns, s.local.data());
+      for (const int d : s.columns)
+        {
+          double *qd = (*q)[d];
+          for (const unsigned int i : fixed[d])
+            qd[i] = 0;
+        }
+      M.Comm().SumAll(s.local.data(), s.global.data(), n_columns);
+      // x += alpha p, r -= alpha q, z = B r; reduce ||r||^2 and r.z.
+      for (const int d : s.columns)
+        {
+          s.alpha_old[d]   = s.alpha[d];
+          s.alpha[d]       = s.rz[d] / s.global[d];
+          double       *xd = x[d], *rd = (*r)[d], *zd = (*z)[d];
+          const double *pd = (*p)[d], *qd = (*q)[d];
+          for (unsigned int i = 0; i < n; ++i)
             {
-              double *qd = (*q)[d];
-              for (const unsigned int i : fixed[d])
-                qd[i] = 0;
+              xd[i] += s.alpha[d] * pd[i];
+              rd[i] -= s.alpha[d] * qd[i];
             }
-          comm.SumAll(local.data(), global.data(), n_columns);
-          // x += alpha p, r -= alpha q, z = B r; reduce ||r||^2 and r.z.
-          for (const int d : columns)
+          preconditioners[d]->vmult(zd, rd, s.local[2 * d], s.local[2 * d + 1]);
+        }
+      M.Comm().SumAll(s.local.data(), s.global.data(), 2 * n_columns);
+    }
+
+    void
+    ComponentCG::check_convergence(const unsigned int it,
+                                   const unsigned int max_iterations,
+                                   Recurrence        &s,
+                                   Result            &result)
+    {
+      for (const int d : s.columns)
+        {
+          // The Lanczos matrix as SolverCG builds it: a row per
+          // completed pair (alpha_{k-1}, beta_k).
+          if (it > 1)
             {
-              alpha_old[d]     = alpha[d];
-              alpha[d]         = rz[d] / global[d];
-              double       *xd = x[d], *rd = (*r)[d], *zd = (*z)[d];
-              const double *pd = (*p)[d], *qd = (*q)[d];
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  xd[i] += alpha[d] * pd[i];
-                  rd[i] -= alpha[d] * qd[i];
-                }
-              preconditioners[d]->vmult(zd, rd, local[2 * d], local[2 * d + 1]);
+              s.diagonal[d].push_back(1. / s.alpha_old[d] +
+                                      s.eigen_beta_alpha[d]);
+              s.eigen_beta_alpha[d] = s.beta[d] / s.alpha_old[d];
+              s.offdiagonal[d].push_back(std::sqrt(s.beta[d]) / s.alpha_old[d]);
             }
-          comm.SumAll(local.data(), global.data(), 2 * n_columns);
-          for (const int d : columns)
+          const double residual = std::sqrt(s.global[2 * d]);
+          s.rz_old[d]           = s.rz[d];
+          s.rz[d]               = s.global[2 * d + 1];
+          if (residual <= s.limit[d])
             {
-              // The Lanczos matrix as SolverCG builds it: a row per
-              // completed pair (alpha_{k-1}, beta_k).
-              if (it > 1)
-                {
-                  diagonal[d].push_back(1. / alpha_old[d] +
-                                        eigen_beta_alpha[d]);
-                  eigen_beta_alpha[d] = beta[d] / alpha_old[d];
-                  offdiagonal[d].push_back(std::sqrt(beta[d]) / alpha_old[d]);
-                }
-              const double residual = std::sqrt(global[2 * d]);
-              rz_old[d]             = rz[d];
-              rz[d]                 = global[2 * d + 1];
-              if (residual <= limit[d])
-                {
-                  active[d]            = false;
-                  result.iterations[d] = it;
-                  --n_active;
-                  result.condition_number =
-                    std::max(result.condition_number,
-                             lanczos_condition(diagonal[d], offdiagonal[d]));
-                }
-              else if (it >= max_iterations || !std::isfinite(residual))
-                throw SolverControl::NoConvergence(it, residual);
+              s.active[d]          = false;
+              result.iterations[d] = it;
+              --s.n_active;
+              result.condition_number =
+                std::max(result.condition_number,
+                         lanczos_condition(s.diagonal[d], s.offdiagonal[d]));
             }
+          else if (it >= max_iterations || !std::isfinite(residual))
+            throw SolverControl::NoConvergence(it, residual);
+        }
+    }
+
+    ComponentCG::Result
+    ComponentCG::solve(
+      const Epetra_CrsMatrix                       &M,
+      const std::vector<const VertexBlockJacobi *> &preconditioners,
+      const std::vector<std::vector<unsigned int>> &fixed,
+      Epetra_MultiVector                           &x,
+      const Epetra_MultiVector                     &b,
+      const double                                  tolerance,
+      const std::vector<double>                    &step_tolerances,
+      const unsigned int                            max_iterations)
+    {
+      const unsigned int n_columns = b.NumVectors();
+      AssertThrow(preconditioners.size() == n_columns &&
+                    fixed.size() == n_columns &&
+                    step_tolerances.size() == n_columns &&
+                    x.NumVectors() == int(n_columns),
+                  ExcMessage("ComponentCG: one preconditioner, fixed set "
+                             "and solution column per right-hand side"));
+      allocate(b);
+      Result result;
+      result.iterations.assign(n_columns, 0);
+      Recurrence s(n_columns);
+      start(M, preconditioners, fixed, x, b, tolerance, step_tolerances, s);
+      for (unsigned int it = 1; s.n_active > 0; ++it)
+        {
+          update_directions(it, s);
+          iterate(M, preconditioners, fixed, x, s);
+          check_convergence(it, max_iterations, s, result);
         }
       return result;
     }

@@ -95,6 +95,207 @@ namespace psmpm
           out);
         check_written(out, filename);
       }
+
+      /// The scene's mesh, space and quadrature cells (the Powell-Sabin
+      /// sub-triangles, for every space).
+      struct Discretization
+      {
+        Discretization(const Mesh::MeshGenerator<2> &mesh,
+                       const std::string            &basis_name)
+        {
+          mesh.create(tria);
+          space = Basis::create_space<2>(basis_name);
+          dof_handler.reinit(tria);
+          dof_handler.distribute_dofs(space->dof_layout());
+          space->reinit(dof_handler);
+          refinement.reinit(tria);
+        }
+
+        Triangulation<2>                 tria;
+        std::unique_ptr<Basis::Space<2>> space;
+        DoFHandler<2>                    dof_handler;
+        Basis::PowellSabinRefinement     refinement;
+      };
+
+      /// Consistent mass matrix and right-hand side (f, phi_i) by the
+      /// 7-point rule on each sub-triangle.
+      void
+      assemble(const Discretization    &disc,
+               const FunctionParser<2> &u,
+               SparseMatrix<double>    &mass,
+               Vector<double>          &rhs)
+      {
+        const unsigned int       dofs_per_cell = disc.space->dofs_per_cell();
+        const Mesh::TriangleRule rule;
+        std::vector<double>      values(dofs_per_cell);
+        std::vector<types::global_dof_index> dofs(dofs_per_cell);
+        FullMatrix<double>                   cell_matrix(dofs_per_cell);
+        Vector<double>                       cell_rhs(dofs_per_cell);
+        for (const auto &cell : disc.dof_handler.active_cell_iterators())
+          {
+            const unsigned int c = cell->active_cell_index();
+            cell_matrix          = 0;
+            cell_rhs             = 0;
+            for (unsigned int s = 0; s < 6; ++s)
+              {
+                const auto   t    = disc.refinement.cell(c).sub_triangle(s);
+                const double area = Mesh::signed_area(t);
+                for (unsigned int q = 0; q < 7; ++q)
+                  {
+                    const Point<2> p  = combine(t, rule.points[q]);
+                    const double   jw = area * rule.weights[q];
+                    disc.space->evaluate(c, p, values.data(), nullptr);
+                    const double f = u.value(p);
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      {
+                        cell_rhs(i) += jw * values[i] * f;
+                        for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                          cell_matrix(i, j) += jw * values[i] * values[j];
+                      }
+                  }
+              }
+            cell->get_dof_indices(dofs);
+            mass.add(dofs, cell_matrix);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              rhs(dofs[i]) += cell_rhs(i);
+          }
+      }
+
+      /// The projection's coefficients: by the lumped (row-sum) mass, or
+      /// by CG with SSOR to 1e-14 of the right-hand side.
+      void
+      project(const SparseMatrix<double> &mass,
+              const Vector<double>       &rhs,
+              const bool                  lumped,
+              Vector<double>             &solution)
+      {
+        const unsigned int n_dofs = rhs.size();
+        if (lumped)
+          {
+            // Both bases are non-negative partitions of unity: row sums are
+            // the positive integrals of the basis functions.
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                double row_sum = 0;
+                for (auto it = mass.begin(i); it != mass.end(i); ++it)
+                  row_sum += it->value();
+                solution(i) = rhs(i) / row_sum;
+              }
+            return;
+          }
+        SolverControl                          control(10 * n_dofs + 100,
+                              1e-14 * std::max(rhs.l2_norm(), 1e-300));
+        SolverCG<Vector<double>>               cg(control);
+        PreconditionSSOR<SparseMatrix<double>> ssor;
+        ssor.initialize(mass, 1.2);
+        cg.solve(mass, solution, rhs, ssor);
+      }
+
+      /// The squared L2 error on the sub-triangles split into four; @p h:
+      /// the largest cell diameter.
+      double
+      squared_error(const Discretization    &disc,
+                    const FunctionParser<2> &u,
+                    const Vector<double>    &solution,
+                    double                  &h)
+      {
+        const unsigned int       dofs_per_cell = disc.space->dofs_per_cell();
+        const Mesh::TriangleRule rule;
+        std::vector<double>      values(dofs_per_cell);
+        std::vector<types::global_dof_index> dofs(dofs_per_cell);
+        double                               error2 = 0;
+        h                                           = 0;
+        for (const auto &cell : disc.dof_handler.active_cell_iterators())
+          {
+            const unsigned int c = cell->active_cell_index();
+            h                    = std::max(h, cell->diameter());
+            cell->get_dof_indices(dofs);
+            for (unsigned int s = 0; s < 6; ++s)
+              for (const auto &t :
+                   subdivide(disc.refinement.cell(c).sub_triangle(s), 2))
+                {
+                  const double area = Mesh::signed_area(t);
+                  for (unsigned int q = 0; q < 7; ++q)
+                    {
+                      const Point<2> p = combine(t, rule.points[q]);
+                      disc.space->evaluate(c, p, values.data(), nullptr);
+                      double uh = 0;
+                      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                        uh += solution(dofs[i]) * values[i];
+                      error2 +=
+                        area * rule.weights[q] * std::pow(uh - u.value(p), 2);
+                    }
+                }
+          }
+        return error2;
+      }
+
+      /// projection.vtu (projection, exact function, error and, unless
+      /// @p basis_dof is invalid, that basis function, on each
+      /// sub-triangle split into @p subdivisions^2), mesh.vtu and
+      /// ps_refinement.vtu.
+      void
+      write_files(const Discretization         &disc,
+                  const FunctionParser<2>      &u,
+                  const Vector<double>         &solution,
+                  const types::global_dof_index basis_dof,
+                  const unsigned int            subdivisions,
+                  const std::string            &output_directory)
+      {
+        const unsigned int  dofs_per_cell = disc.space->dofs_per_cell();
+        std::vector<double> values(dofs_per_cell);
+        std::vector<types::global_dof_index> dofs(dofs_per_cell);
+        // Output: piecewise quadratic C1 fields on a refined patch mesh.
+        std::vector<std::string> names = {"projection", "exact", "error"};
+        if (basis_dof != numbers::invalid_dof_index)
+          names.push_back("basis_function");
+        std::vector<DataOutBase::Patch<2, 2>> patches, mesh_patches,
+          refinement_patches;
+        for (const auto &cell : disc.dof_handler.active_cell_iterators())
+          {
+            const unsigned int c = cell->active_cell_index();
+            cell->get_dof_indices(dofs);
+            const auto &ref = disc.refinement.cell(c);
+            mesh_patches.push_back(triangle_patch(ref.vertices, 1));
+            for (unsigned int k = 0; k < 3; ++k)
+              mesh_patches.back().data(0, k) = c;
+            for (unsigned int s = 0; s < 6; ++s)
+              {
+                refinement_patches.push_back(
+                  triangle_patch(ref.sub_triangle(s), 1));
+                for (unsigned int k = 0; k < 3; ++k)
+                  refinement_patches.back().data(0, k) = 6 * c + s;
+                for (const auto &t :
+                     subdivide(ref.sub_triangle(s), subdivisions))
+                  {
+                    auto patch = triangle_patch(t, names.size());
+                    for (unsigned int k = 0; k < 3; ++k)
+                      {
+                        disc.space->evaluate(c, t[k], values.data(), nullptr);
+                        double uh = 0, phi = 0;
+                        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                          {
+                            uh += solution(dofs[i]) * values[i];
+                            if (dofs[i] == basis_dof)
+                              phi += values[i];
+                          }
+                        const double exact = u.value(t[k]);
+                        patch.data(0, k)   = uh;
+                        patch.data(1, k)   = exact;
+                        patch.data(2, k)   = uh - exact;
+                        if (names.size() > 3)
+                          patch.data(3, k) = phi;
+                      }
+                    patches.push_back(patch);
+                  }
+              }
+          }
+        write_patches(output_directory + "/projection.vtu", patches, names);
+        write_patches(output_directory + "/mesh.vtu", mesh_patches, {"cell"});
+        write_patches(output_directory + "/ps_refinement.vtu",
+                      refinement_patches,
+                      {"sub_triangle"});
+      }
     } // namespace
 
     void
@@ -205,126 +406,36 @@ namespace psmpm
     L2Projection::run(const Mesh::MeshGenerator<2> &mesh,
                       const std::string            &basis_name,
                       const std::string            &output_directory,
-                      Summary         &summary,
+                      Summary                      &summary,
                       MPI_Comm                      comm)
     {
-      Triangulation<2> tria;
-      mesh.create(tria);
-
-      auto          space = Basis::create_space<2>(basis_name);
-      DoFHandler<2> dof_handler(tria);
-      dof_handler.distribute_dofs(space->dof_layout());
-      space->reinit(dof_handler);
-
-      // The quadrature cells: PS sub-triangles, for every space.
-      Basis::PowellSabinRefinement refinement;
-      refinement.reinit(tria);
-
-      FunctionParser<2> u(1);
+      const Discretization disc(mesh, basis_name);
+      FunctionParser<2>    u(1);
       u.initialize("x,y", function_expression, {{"pi", numbers::PI}});
 
-      const unsigned int n_dofs        = dof_handler.n_dofs();
-      const unsigned int dofs_per_cell = space->dofs_per_cell();
-
+      const unsigned int     n_dofs = disc.dof_handler.n_dofs();
       DynamicSparsityPattern dsp(n_dofs);
-      DoFTools::make_sparsity_pattern(dof_handler, dsp);
+      DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
       SparsityPattern sparsity;
       sparsity.copy_from(dsp);
       SparseMatrix<double> mass(sparsity);
       Vector<double>       rhs(n_dofs), solution(n_dofs);
+      assemble(disc, u, mass, rhs);
+      project(mass, rhs, lumped, solution);
 
-      const Mesh::TriangleRule             rule;
-      std::vector<double>                  values(dofs_per_cell);
-      std::vector<types::global_dof_index> dofs(dofs_per_cell);
-      FullMatrix<double>                   cell_matrix(dofs_per_cell);
-      Vector<double>                       cell_rhs(dofs_per_cell);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          const unsigned int c = cell->active_cell_index();
-          cell_matrix          = 0;
-          cell_rhs             = 0;
-          for (unsigned int s = 0; s < 6; ++s)
-            {
-              const auto   t    = refinement.cell(c).sub_triangle(s);
-              const double area = Mesh::signed_area(t);
-              for (unsigned int q = 0; q < 7; ++q)
-                {
-                  const Point<2> p  = combine(t, rule.points[q]);
-                  const double   jw = area * rule.weights[q];
-                  space->evaluate(c, p, values.data(), nullptr);
-                  const double f = u.value(p);
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    {
-                      cell_rhs(i) += jw * values[i] * f;
-                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                        cell_matrix(i, j) += jw * values[i] * values[j];
-                    }
-                }
-            }
-          cell->get_dof_indices(dofs);
-          mass.add(dofs, cell_matrix);
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            rhs(dofs[i]) += cell_rhs(i);
-        }
-
-      if (lumped)
-        {
-          // Both bases are non-negative partitions of unity: row sums are
-          // the positive integrals of the basis functions.
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              double row_sum = 0;
-              for (auto it = mass.begin(i); it != mass.end(i); ++it)
-                row_sum += it->value();
-              solution(i) = rhs(i) / row_sum;
-            }
-        }
-      else
-        {
-          SolverControl                          control(10 * n_dofs + 100,
-                                1e-14 * std::max(rhs.l2_norm(), 1e-300));
-          SolverCG<Vector<double>>               cg(control);
-          PreconditionSSOR<SparseMatrix<double>> ssor;
-          ssor.initialize(mass, 1.2);
-          cg.solve(mass, solution, rhs, ssor);
-        }
-
-      // Error on the sub-triangles split into four.
-      double error2 = 0, h = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          const unsigned int c = cell->active_cell_index();
-          h                    = std::max(h, cell->diameter());
-          cell->get_dof_indices(dofs);
-          for (unsigned int s = 0; s < 6; ++s)
-            for (const auto &t :
-                 subdivide(refinement.cell(c).sub_triangle(s), 2))
-              {
-                const double area = Mesh::signed_area(t);
-                for (unsigned int q = 0; q < 7; ++q)
-                  {
-                    const Point<2> p = combine(t, rule.points[q]);
-                    space->evaluate(c, p, values.data(), nullptr);
-                    double uh = 0;
-                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      uh += solution(dofs[i]) * values[i];
-                    error2 +=
-                      area * rule.weights[q] * std::pow(uh - u.value(p), 2);
-                  }
-              }
-        }
-
+      double       h      = 0;
+      const double error2 = squared_error(disc, u, solution, h);
       summary.set("errors.L2", std::sqrt(error2));
       summary.set_integer("n_dofs", n_dofs);
-      summary.set_integer("n_cells", tria.n_active_cells());
+      summary.set_integer("n_cells", disc.tria.n_active_cells());
       summary.set("h", h);
 
       // The requested basis function, as a global DoF index.
       types::global_dof_index basis_dof = numbers::invalid_dof_index;
       if (output_basis_vertex != numbers::invalid_unsigned_int)
         {
-          check_basis_function(tria, *space, basis_name);
-          for (const auto &cell : dof_handler.active_cell_iterators())
+          check_basis_function(disc.tria, *disc.space, basis_name);
+          for (const auto &cell : disc.dof_handler.active_cell_iterators())
             for (unsigned int k = 0; k < 3; ++k)
               if (cell->vertex_index(k) == output_basis_vertex)
                 basis_dof = cell->vertex_dof_index(k, output_basis_function);
@@ -333,57 +444,12 @@ namespace psmpm
       if (!write_output || Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       std::filesystem::create_directories(output_directory);
-
-      // Output: piecewise quadratic C1 fields on a refined patch mesh.
-      std::vector<std::string> names = {"projection", "exact", "error"};
-      if (basis_dof != numbers::invalid_dof_index)
-        names.push_back("basis_function");
-      std::vector<DataOutBase::Patch<2, 2>> patches, mesh_patches,
-        refinement_patches;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          const unsigned int c = cell->active_cell_index();
-          cell->get_dof_indices(dofs);
-          const auto &ref = refinement.cell(c);
-          mesh_patches.push_back(triangle_patch(ref.vertices, 1));
-          for (unsigned int k = 0; k < 3; ++k)
-            mesh_patches.back().data(0, k) = c;
-          for (unsigned int s = 0; s < 6; ++s)
-            {
-              refinement_patches.push_back(
-                triangle_patch(ref.sub_triangle(s), 1));
-              for (unsigned int k = 0; k < 3; ++k)
-                refinement_patches.back().data(0, k) = 6 * c + s;
-              for (const auto &t :
-                   subdivide(ref.sub_triangle(s), output_subdivisions))
-                {
-                  auto patch = triangle_patch(t, names.size());
-                  for (unsigned int k = 0; k < 3; ++k)
-                    {
-                      space->evaluate(c, t[k], values.data(), nullptr);
-                      double uh = 0, phi = 0;
-                      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                        {
-                          uh += solution(dofs[i]) * values[i];
-                          if (dofs[i] == basis_dof)
-                            phi += values[i];
-                        }
-                      const double exact = u.value(t[k]);
-                      patch.data(0, k)   = uh;
-                      patch.data(1, k)   = exact;
-                      patch.data(2, k)   = uh - exact;
-                      if (names.size() > 3)
-                        patch.data(3, k) = phi;
-                    }
-                  patches.push_back(patch);
-                }
-            }
-        }
-      write_patches(output_directory + "/projection.vtu", patches, names);
-      write_patches(output_directory + "/mesh.vtu", mesh_patches, {"cell"});
-      write_patches(output_directory + "/ps_refinement.vtu",
-                    refinement_patches,
-                    {"sub_triangle"});
+      write_files(disc,
+                  u,
+                  solution,
+                  basis_dof,
+                  output_subdivisions,
+                  output_directory);
     }
   } // namespace Solver
 } // namespace psmpm

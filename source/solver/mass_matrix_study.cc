@@ -119,6 +119,115 @@ namespace psmpm
       return K;
     }
 
+    namespace
+    {
+      /// cond(M1 (x) M1): its eigenvalues are the products of those of M1.
+      double
+      kronecker_condition_number(const FullMatrix<double> &M1)
+      {
+        LAPACKFullMatrix<double> L(M1.m());
+        L = M1;
+        L.compute_eigenvalues();
+        double lmin = std::numeric_limits<double>::max(), lmax = 0;
+        for (unsigned int i = 0; i < M1.m(); ++i)
+          {
+            lmin = std::min(lmin, L.eigenvalue(i).real());
+            lmax = std::max(lmax, L.eigenvalue(i).real());
+          }
+        return std::pow(lmax / lmin, 2);
+      }
+
+      /// The p-multigrid's levels: mass matrices, prolongations and
+      /// restrictions (nullptr on the coarsest level), owned here.
+      struct Levels
+      {
+        std::vector<std::unique_ptr<OwnedSparseMatrix>> owned;
+        std::vector<const SparseMatrix<double> *>       matrices, prolongations,
+          restrictions;
+      };
+
+      /// The levels of @p level_degrees on n elements per direction, the
+      /// first @p first functions of each end removed; restriction by the
+      /// prolongation's @p transpose or the lumped projection.
+      Levels
+      build_levels(const std::vector<unsigned int> &level_degrees,
+                   const unsigned int               n,
+                   const unsigned int               first,
+                   const bool                       transpose)
+      {
+        Levels levels;
+        for (unsigned int l = 0; l < level_degrees.size(); ++l)
+          {
+            const Basis::BSpline1D   s(level_degrees[l], n);
+            const FullMatrix<double> Ml = interior(s.mass_matrix(s), first);
+            levels.owned.push_back(kronecker_product(Ml, Ml));
+            levels.matrices.push_back(&levels.owned.back()->matrix);
+            if (l == 0)
+              {
+                levels.prolongations.push_back(nullptr);
+                levels.restrictions.push_back(nullptr);
+                continue;
+              }
+            const Basis::BSpline1D   coarse(level_degrees[l - 1], n);
+            const FullMatrix<double> P = lumped_projection(s, coarse, first);
+            levels.owned.push_back(kronecker_product(P, P));
+            levels.prolongations.push_back(&levels.owned.back()->matrix);
+            if (transpose)
+              {
+                FullMatrix<double> R(P.n(), P.m());
+                R.copy_transposed(P);
+                levels.owned.push_back(kronecker_product(R, R));
+              }
+            else
+              {
+                const FullMatrix<double> R =
+                  lumped_projection(coarse, s, first);
+                levels.owned.push_back(kronecker_product(R, R));
+              }
+            levels.restrictions.push_back(&levels.owned.back()->matrix);
+          }
+        return levels;
+      }
+
+      /// Mass matrix study/Right-hand side for the matrix @p M of
+      /// @p space (x) @p space without the first @p first functions at
+      /// each end (@p m per direction).
+      Vector<double>
+      load_vector(const std::string          &type,
+                  const SparseMatrix<double> &M,
+                  const Basis::BSpline1D     &space,
+                  const unsigned int          m,
+                  const unsigned int          first)
+      {
+        Vector<double> b(M.m());
+        if (type == "constant")
+          b = gravity;
+        else if (type == "row sums")
+          {
+            // With the boundary functions removed this differs from the
+            // load vector near the boundary: the solution is the smooth
+            // coefficient vector 9.81, while the load vector's (the L2
+            // projection of 9.81 onto functions that vanish on the
+            // boundary) oscillates next to the boundary, where CG and
+            // p-multigrid converge slowly (doc/solver_study.md).
+            Vector<double> f(M.m());
+            f = gravity;
+            M.vmult(b, f);
+          }
+        else
+          {
+            Vector<double> l1(m);
+            const auto     integrals = space.integrals();
+            for (unsigned int i = 0; i < l1.size(); ++i)
+              l1(i) = integrals(i + first);
+            for (unsigned int i = 0; i < l1.size(); ++i)
+              for (unsigned int j = 0; j < l1.size(); ++j)
+                b(i * l1.size() + j) = gravity * l1(i) * l1(j);
+          }
+        return b;
+      }
+    } // namespace
+
     void
     MassMatrixStudy::declare_parameters(ParameterHandler &prm)
     {
@@ -265,20 +374,7 @@ namespace psmpm
       const Basis::BSpline1D   space(p, n);
       const FullMatrix<double> M1 = interior(space.mass_matrix(space), first);
       row.n_dofs                  = M1.m() * M1.m();
-
-      // The eigenvalues of M1 (x) M1 are the products of those of M1.
-      {
-        LAPACKFullMatrix<double> L(M1.m());
-        L = M1;
-        L.compute_eigenvalues();
-        double lmin = std::numeric_limits<double>::max(), lmax = 0;
-        for (unsigned int i = 0; i < M1.m(); ++i)
-          {
-            lmin = std::min(lmin, L.eigenvalue(i).real());
-            lmax = std::max(lmax, L.eigenvalue(i).real());
-          }
-        row.condition_number = std::pow(lmax / lmin, 2);
-      }
+      row.condition_number        = kronecker_condition_number(M1);
 
       // The matrices of degrees 1..p (only those of the hierarchy are
       // used).
@@ -288,65 +384,11 @@ namespace psmpm
       else
         for (unsigned int q = 1; q <= p; ++q)
           level_degrees.push_back(q);
-      std::vector<std::unique_ptr<OwnedSparseMatrix>> owned;
-      std::vector<const SparseMatrix<double> *>       matrices, prolongations,
-        restrictions;
-      for (unsigned int l = 0; l < level_degrees.size(); ++l)
-        {
-          const Basis::BSpline1D   s(level_degrees[l], n);
-          const FullMatrix<double> Ml = interior(s.mass_matrix(s), first);
-          owned.push_back(kronecker_product(Ml, Ml));
-          matrices.push_back(&owned.back()->matrix);
-          if (l == 0)
-            {
-              prolongations.push_back(nullptr);
-              restrictions.push_back(nullptr);
-              continue;
-            }
-          const Basis::BSpline1D   coarse(level_degrees[l - 1], n);
-          const FullMatrix<double> P = lumped_projection(s, coarse, first);
-          owned.push_back(kronecker_product(P, P));
-          prolongations.push_back(&owned.back()->matrix);
-          if (restriction == "transpose")
-            {
-              FullMatrix<double> R(P.n(), P.m());
-              R.copy_transposed(P);
-              owned.push_back(kronecker_product(R, R));
-            }
-          else
-            {
-              const FullMatrix<double> R = lumped_projection(coarse, s, first);
-              owned.push_back(kronecker_product(R, R));
-            }
-          restrictions.push_back(&owned.back()->matrix);
-        }
-      const SparseMatrix<double> &M = *matrices.back();
-
-      Vector<double> b(M.m());
-      if (right_hand_side == "constant")
-        b = gravity;
-      else if (right_hand_side == "row sums")
-        {
-          // With the boundary functions removed this differs from the
-          // load vector near the boundary: the solution is the smooth
-          // coefficient vector 9.81, while the load vector's (the L2
-          // projection of 9.81 onto functions that vanish on the boundary)
-          // oscillates next to the boundary, where CG and p-multigrid
-          // converge slowly (doc/solver_study.md).
-          Vector<double> f(M.m());
-          f = gravity;
-          M.vmult(b, f);
-        }
-      else
-        {
-          Vector<double> l1(M1.m());
-          const auto     integrals = space.integrals();
-          for (unsigned int i = 0; i < l1.size(); ++i)
-            l1(i) = integrals(i + first);
-          for (unsigned int i = 0; i < l1.size(); ++i)
-            for (unsigned int j = 0; j < l1.size(); ++j)
-              b(i * l1.size() + j) = gravity * l1(i) * l1(j);
-        }
+      const Levels levels =
+        build_levels(level_degrees, n, first, restriction == "transpose");
+      const SparseMatrix<double> &M = *levels.matrices.back();
+      const Vector<double>        b =
+        load_vector(right_hand_side, M, space, M1.m(), first);
 
       row.cg_iterations =
         cg_iterations(M, b, "none", tolerance, max_iterations);
@@ -355,7 +397,10 @@ namespace psmpm
       row.amg_cg_iterations =
         cg_iterations(M, b, "amg", tolerance, max_iterations);
 
-      const PMultigrid mg(multigrid, matrices, prolongations, restrictions);
+      const PMultigrid mg(multigrid,
+                          levels.matrices,
+                          levels.prolongations,
+                          levels.restrictions);
       Vector<double>   x(M.m());
       row.pmg_vcycles = mg.solve(b, x, tolerance);
       return row;
@@ -397,9 +442,9 @@ namespace psmpm
     }
 
     void
-    MassMatrixStudy::run(const std::string    &output_directory,
-                         Summary &summary,
-                         MPI_Comm              comm) const
+    MassMatrixStudy::run(const std::string &output_directory,
+                         Summary           &summary,
+                         MPI_Comm           comm) const
     {
       const auto   rows              = compute();
       double       largest_condition = 0;

@@ -323,6 +323,38 @@ namespace psmpm
     }
 
     template <int dim>
+    void
+    SamplingStabilization<dim>::lift_unseen_quadratics(
+      const unsigned int i,
+      const double       rho,
+      double (&B)[n_modes][n_modes])
+    {
+      constexpr unsigned int n = n_functions;
+      for (unsigned int r = 0; r < n_modes; ++r)
+        for (unsigned int s = 0; s < r; ++s)
+          B[r][s] = B[s][r];
+      double values[n_modes], V[n_modes][n_modes];
+      eigenpairs_3x3(B, values, V);
+      // g_j = sqrt(rho (t - lambda_j)) F v_j, F = E Q_q: the
+      // lift is sum_j g_j g_j^T (Q_q^T F = I).
+      Lift        lift{i, {}};
+      const auto *F = &quadratic_factor[i * n * n_modes];
+      for (unsigned int j = 0; j < n_modes; ++j)
+        if (values[j] / rho < target)
+          {
+            const double w = std::sqrt(rho * (target - values[j] / rho));
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                double g = 0;
+                for (unsigned int r = 0; r < n_modes; ++r)
+                  g += F[k * n_modes + r] * V[r][j];
+                lift.columns[k * n_modes + j] = w * g;
+              }
+          }
+      quadratic_lifts.push_back(lift);
+    }
+
+    template <int dim>
     unsigned int
     SamplingStabilization<dim>::weigh(const GridSystem<dim> &grid)
     {
@@ -396,29 +428,7 @@ namespace psmpm
           project(n_modes, B);
           if (has_eigenvalue_below(B, target * rho))
             {
-              for (unsigned int r = 0; r < n_modes; ++r)
-                for (unsigned int s = 0; s < r; ++s)
-                  B[r][s] = B[s][r];
-              double values[n_modes], V[n_modes][n_modes];
-              eigenpairs_3x3(B, values, V);
-              // g_j = sqrt(rho (t - lambda_j)) F v_j, F = E Q_q: the
-              // lift is sum_j g_j g_j^T (Q_q^T F = I).
-              Lift        lift{i, {}};
-              const auto *F = &quadratic_factor[i * n * n_modes];
-              for (unsigned int j = 0; j < n_modes; ++j)
-                if (values[j] / rho < target)
-                  {
-                    const double w =
-                      std::sqrt(rho * (target - values[j] / rho));
-                    for (unsigned int k = 0; k < n; ++k)
-                      {
-                        double g = 0;
-                        for (unsigned int r = 0; r < n_modes; ++r)
-                          g += F[k * n_modes + r] * V[r][j];
-                        lift.columns[k * n_modes + j] = w * g;
-                      }
-                  }
-              quadratic_lifts.push_back(lift);
+              lift_unseen_quadratics(i, rho, B);
               weighted = true;
             }
           n_weighted += weighted;

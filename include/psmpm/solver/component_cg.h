@@ -47,17 +47,6 @@ namespace psmpm
         double                    condition_number = 0;
       };
 
-      /**
-       * Solve from the guess in @p x (zero on the fixed rows) until
-       * ||r_d|| <= @p tolerance ||b_d|| or, from a guess that is not zero,
-       * ||r_d|| <= @p step_tolerances[d] ||b_d - M x_d|| (the residual of
-       * the guess: what the step changes), for every column d.
-       * @p fixed[d] lists the locally owned rows (local indices of M's row
-       * map) fixed for column d; their entries of @p b must be zero and stay
-       * zero in @p x. Throws
-       * SolverControl::NoConvergence if a column needs more than
-       * @p max_iterations.
-       */
       /// Check the structure of @p M after every change of its sparsity
       /// (not of its values): whether its rows come in vertex triples.
       void
@@ -70,6 +59,17 @@ namespace psmpm
         return triples;
       }
 
+      /**
+       * Solve from the guess in @p x (zero on the fixed rows) until
+       * ||r_d|| <= @p tolerance ||b_d|| or, from a guess that is not zero,
+       * ||r_d|| <= @p step_tolerances[d] ||b_d - M x_d|| (the residual of
+       * the guess: what the step changes), for every column d.
+       * @p fixed[d] lists the locally owned rows (local indices of M's row
+       * map) fixed for column d; their entries of @p b must be zero and stay
+       * zero in @p x. Throws
+       * SolverControl::NoConvergence if a column needs more than
+       * @p max_iterations.
+       */
       Result
       solve(const Epetra_CrsMatrix                       &M,
             const std::vector<const VertexBlockJacobi *> &preconditioners,
@@ -81,6 +81,41 @@ namespace psmpm
             const unsigned int                            max_iterations);
 
     private:
+      struct Recurrence;
+
+      /// The work vectors r, z, p, q for the map and width of @p b.
+      void
+      allocate(const Epetra_MultiVector &b);
+      /// r = b - M x, z = B r, each column's stopping limit and whether
+      /// it is still active.
+      void
+      start(const Epetra_CrsMatrix                       &M,
+            const std::vector<const VertexBlockJacobi *> &preconditioners,
+            const std::vector<std::vector<unsigned int>> &fixed,
+            const Epetra_MultiVector                     &x,
+            const Epetra_MultiVector                     &b,
+            const double                                  tolerance,
+            const std::vector<double>                    &step_tolerances,
+            Recurrence                                   &s);
+      /// p = z + beta p on the active columns (iteration @p it).
+      void
+      update_directions(const unsigned int it, Recurrence &s);
+      /// q = M p, then x += alpha p, r -= alpha q, z = B r, with one
+      /// reduction for alpha and one for ||r|| and r.z.
+      void
+      iterate(const Epetra_CrsMatrix                       &M,
+              const std::vector<const VertexBlockJacobi *> &preconditioners,
+              const std::vector<std::vector<unsigned int>> &fixed,
+              Epetra_MultiVector                           &x,
+              Recurrence                                   &s);
+      /// The Lanczos rows of the step and each column's stopping test;
+      /// throws SolverControl::NoConvergence past @p max_iterations.
+      void
+      check_convergence(const unsigned int it,
+                        const unsigned int max_iterations,
+                        Recurrence        &s,
+                        Result            &result);
+
       /// q = M v on @p columns (the work vector q), and v . q per column
       /// into @p v_q[column].
       void

@@ -18,13 +18,15 @@
 
 #include <psmpm/basis/space.h>
 #include <psmpm/solver/cell_exchange.h>
-#include <psmpm/solver/component_cg.h>
-#include <psmpm/solver/dense_cholesky.h>
+#include <psmpm/solver/component_constraints.h>
 #include <psmpm/solver/ghost_exchange.h>
+#include <psmpm/solver/grid_dof_layout.h>
+#include <psmpm/solver/grid_matrices.h>
+#include <psmpm/solver/mass_solver.h>
 #include <psmpm/solver/mass_strategy.h>
 #include <psmpm/solver/p_multigrid_hierarchy.h>
+#include <psmpm/solver/patch_block.h>
 #include <psmpm/solver/sampling_stabilization.h>
-#include <psmpm/solver/vertex_block_jacobi.h>
 
 #include <array>
 #include <memory>
@@ -45,6 +47,15 @@ namespace psmpm
      * into distributed systems and returns the solution in a local array
      * over the locally relevant DoFs (index l of relevant_dofs()). How the
      * mass matrix is formed is the MassStrategy's business.
+     *
+     * Its parts: GridDofLayout (index sets, the local relevant numbering,
+     * cell DoFs, the sums and ghost values between ranks),
+     * ComponentConstraints (Dirichlet and active constraints per
+     * component), GridMatrices (the matrices, their sparsity and the
+     * assembly of cell and patch blocks) and MassSolver (shared or
+     * per-component CG, direct solves, preconditioners with the
+     * p-multigrid). GridSystem holds the per-cell arrays and the step's
+     * order: reinit(), assemble_mass(), solve().
      */
     template <int dim>
     class GridSystem
@@ -112,22 +123,8 @@ namespace psmpm
         std::vector<Tensor<1, dim>> rhs;
       };
 
-      /// A dense block over a set of DoFs (local relevant numbering) that a
-      /// strategy adds, times @p weight, to the matrix of every component
-      /// (e.g. a ghost penalty over the union of two cells). The block
-      /// only points to data the strategy keeps (a step adds tens of
-      /// thousands of blocks: no allocation per block and step).
-      struct PatchBlock
-      {
-        const unsigned int *dofs = nullptr;
-        unsigned int        n    = 0;
-        /// n x n, row-major.
-        const double *values = nullptr;
-        double        weight = 1;
-        /// Value-array positions from patch_slots() for the current
-        /// sparsity_generation(), or nullptr (searched in the row).
-        const int *slots = nullptr;
-      };
+      /// A dense block a strategy adds to the matrix of every component.
+      using PatchBlock = Solver::PatchBlock;
 
       /// The vertex view of the DoFs, for vertex-wise strategies.
       struct VertexTables
@@ -215,7 +212,7 @@ namespace psmpm
       const std::vector<unsigned int> &
       cell_dofs() const
       {
-        return cell_dof_indices;
+        return layout.cell_dofs();
       }
       /// Patch blocks of the step: cleared before MassStrategy::prepare(),
       /// assembled after the cell blocks.
@@ -229,7 +226,7 @@ namespace psmpm
       unsigned int
       sparsity_generation() const
       {
-        return generation;
+        return matrices.generation();
       }
       /// Value-array positions of the entries (k, l) of a dense block over
       /// the local relevant DoFs @p dofs (-1 where the row is another
@@ -238,11 +235,14 @@ namespace psmpm
       void
       patch_slots(const unsigned int *dofs,
                   const unsigned int  n,
-                  std::vector<int>   &slots) const;
+                  std::vector<int>   &slots) const
+      {
+        matrices.patch_slots(dofs, n, slots);
+      }
       const std::vector<unsigned int> &
       owned_cells() const
       {
-        return owned_cell_indices;
+        return layout.owned_cells();
       }
       const VertexTables &
       vertex_tables() const
@@ -267,7 +267,7 @@ namespace psmpm
       const GhostExchange &
       ghost_exchange() const
       {
-        return exchange;
+        return layout.ghost_exchange();
       }
 
       const SolveStatistics &
@@ -284,37 +284,35 @@ namespace psmpm
       const IndexSet &
       locally_owned_dofs() const
       {
-        return owned;
+        return layout.owned_dofs();
       }
       const IndexSet &
       relevant_dofs() const
       {
-        return relevant;
+        return layout.relevant_dofs();
       }
       /// Global index of local relevant index l.
       const std::vector<types::global_dof_index> &
       relevant_global_indices() const
       {
-        return relevant_global;
+        return layout.relevant_global();
       }
       const AffineConstraints<double> &
       dirichlet_constraints(const unsigned int d) const
       {
-        return dirichlet[d];
+        return component_constraints.dirichlet(d);
       }
       const AffineConstraints<double> &
       constraints(const unsigned int d) const
       {
-        return active_constraints[d];
+        return component_constraints.active(d);
       }
       /// Replace the step's constraints of component d (closed, already
       /// merged with the Dirichlet ones).
       void
       set_constraints(const unsigned int d, AffineConstraints<double> &c)
       {
-        active_constraints[d].clear();
-        active_constraints[d].copy_from(c);
-        update_constraint_flags(d);
+        component_constraints.set(d, c, layout.relevant_global());
       }
       /// The assembled mass matrix of component d (matrix strategies,
       /// after assemble_mass; rows of DoFs without particle mass carry a
@@ -326,14 +324,14 @@ namespace psmpm
       const TrilinosWrappers::SparseMatrix &
       mass_matrix(const unsigned int d) const
       {
-        return matrix[d];
+        return matrices.matrix(d);
       }
       /// Preconditioner = pmg (one process, Powell-Sabin): the levels of
       /// the p-multigrid, assembled with the matrices.
       const PMultigridHierarchy<dim> &
       multigrid() const
       {
-        return pmg;
+        return mass_solver.multigrid();
       }
       /// Lumped mass in local relevant numbering (after assemble_mass).
       const std::vector<double> &
@@ -388,175 +386,87 @@ namespace psmpm
       const unsigned int n_cells;
 
     private:
-      /// Sum the per-cell values into @p target; with @p condense, apply
-      /// the space's ties (C^T) first, as the lumped path needs.
+      /// Index sets and cell DoFs, constraints, the per-cell and owned
+      /// vectors of reinit().
       void
-      scatter(const double                  *cell_values,
-              const unsigned int             stride,
-              const unsigned int             offset,
-              TrilinosWrappers::MPI::Vector &target,
-              const bool                     condense = false) const;
-      void
-      build_ties();
-      void
-      to_local(const TrilinosWrappers::MPI::Vector &owned_vector,
-               std::vector<double>                 &local) const;
+      reinit_vectors();
+      /// int rho phi_i^2 over each DoF's whole support.
       void
       compute_full_support_diagonal(const double density);
       void
       build_vertex_tables(
         const std::array<std::set<types::boundary_id>, dim> &fixed);
+      /// The matrices' sparsity from the cells' couplings under the
+      /// active constraints (and the strategy's neighbour couplings).
       void
       build_sparsity();
+      /// Every DoF of the cells around a vertex with every other: the
+      /// couplings of patch blocks over two cells that share a vertex.
+      void
+      add_neighbor_couplings(DynamicSparsityPattern &dsp) const;
       /// The particle mass matrix' diagonal in local relevant numbering
       /// (a member's reference, valid until the next call).
       const std::vector<double> &
       particle_diagonal();
+      /// The lumped mass from the cell arrays and the statistics of its
+      /// diagonal.
       void
-      assemble_matrix(const unsigned int d);
-      /// Per-cell AffineConstraints::distribute_local_to_global, for
-      /// constraints that tie DoFs to others (extrapolate).
+      assemble_lumped_mass();
+      /// The statistics of the particle diagonal, the strategy's and the
+      /// sampling stabilisation's share, then the matrices.
       void
-      assemble_matrix_with_constraints(const unsigned int d);
-      /// Positions of the cell blocks' entries in the matrices' value
-      /// arrays, after every change of the sparsity.
+      assemble_matrices();
+      /// rhs_vector = b of component @p d under its active constraints.
       void
-      compute_matrix_slots();
-      /// Add the dense block @p values (row-major, n x n) over the local
-      /// relevant DoFs @p dofs to @p target, as distribute_local_to_global
-      /// with homogeneous Dirichlet constraints on the DoFs flagged in
-      /// @p fixed (local relevant numbering; nullptr: none) does, through
-      /// the value array (cell blocks with their precomputed @p slots,
-      /// other blocks by a search of the row).
+      assemble_rhs(const unsigned int d);
+      /// All components through the shared matrix, from @p solution's
+      /// guess (owned entries; MassSolver::set_guess()).
       void
-      add_block(TrilinosWrappers::SparseMatrix &target,
-                const char                     *fixed,
-                const unsigned int             *dofs,
-                const unsigned int              n,
-                const double                   *values,
-                const double                    weight,
-                const int                      *slots);
-      /// add_block() of every owned cell's block and every patch block.
+      solve_together(const std::vector<Tensor<1, dim>> &solution);
+      /// x of component @p d from its own matrix, from @p solution's guess.
       void
-      add_blocks(TrilinosWrappers::SparseMatrix &target, const char *fixed);
-      /// Compress @p target and give rows without particle mass (not
-      /// flagged in @p fixed) a unit diagonal.
+      solve_component(const unsigned int                 d,
+                      const std::vector<Tensor<1, dim>> &solution,
+                      TrilinosWrappers::MPI::Vector     &x);
+      /// x = b / m of component @p d with the lumped mass m.
       void
-      finish_assembly(TrilinosWrappers::SparseMatrix &target,
-                      const char                     *fixed);
-      /// Whether this step's components share one matrix and one CG
-      /// (ComponentCG): more than one component, constraints that fix
-      /// DoFs to zero only, (block) Jacobi CG, no direct solver.
-      bool
-      components_together() const;
-      /// Mass matrix/Step tolerance for component @p d: 0 (off) for a
-      /// free component (free_component).
-      double
-      step_tolerance(const unsigned int d) const;
-      /// matrix[0] = M without constraints, the fixed rows of each
-      /// component and its preconditioner with them masked.
+      solve_lumped(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
+      /// The active constraints of component @p d on @p x.
       void
-      assemble_shared_matrix();
-      /// solution_columns (allocated for the matrix' rows) = @p solution's
-      /// owned entries, zero on fixed rows: the guess of solve_components.
-      void
-      set_guess(const std::vector<Tensor<1, dim>> &solution);
-      /// All components by ComponentCG into solution_columns, which holds
-      /// the initial guess; returns the sum of their iterations.
-      unsigned int
-      solve_components();
-      void
-      update_constraint_flags(const unsigned int d);
-      /// @p x holds the initial guess (owned entries).
-      unsigned int
-      solve_consistent(const unsigned int d, TrilinosWrappers::MPI::Vector &x);
+      distribute_constraints(const unsigned int             d,
+                             TrilinosWrappers::MPI::Vector &x) const;
 
-      std::unique_ptr<MassStrategy<dim>>              mass_strategy;
-      SamplingStabilization<dim>                      sampling;
-      const Basis::Space<dim>                        &space;
-      const DoFHandler<dim>                          &dof_handler;
-      MPI_Comm                                        comm;
-      IndexSet                                        owned;
-      IndexSet                                        relevant;
-      std::vector<types::global_dof_index>            relevant_global;
-      std::vector<unsigned int>                       cell_dof_indices;
-      std::vector<unsigned int>                       owned_cell_indices;
-      CellArrays                                      cells;
-      std::vector<PatchBlock>                         patches;
-      VertexTables                                    vertices;
-      std::array<AffineConstraints<double>, dim>      dirichlet;
-      std::array<AffineConstraints<double>, dim>      active_constraints;
-      std::array<TrilinosWrappers::SparseMatrix, dim> matrix;
-      /// Direct assembly (assemble_matrix): for component d, whether every
-      /// constraint fixes its DoF to zero (Dirichlet only), which DoFs are
-      /// constrained (local relevant numbering), the matrix row and column
-      /// of a local relevant DoF (-1: row not owned), and per owned cell
-      /// (in owned_cell_indices order) the value-array position of each
-      /// entry (k, l) of its block (-1: row not owned).
-      std::array<bool, dim>                                 only_dirichlet{};
-      std::array<std::vector<char>, dim>                    constrained;
-      std::vector<int>                                      matrix_row;
-      std::vector<int>                                      matrix_column;
-      std::vector<int>                                      cell_slots;
-      unsigned int                                          generation = 0;
-      std::array<TrilinosWrappers::PreconditionJacobi, dim> jacobi;
-      std::array<VertexBlockJacobi, dim>                    block_jacobi;
-      std::array<TrilinosWrappers::PreconditionAMG, dim>    amg;
-      /// Preconditioner = pmg: the p-multigrid's levels and cycles.
-      PMultigridHierarchy<dim> pmg;
-      /// Components solved together (components_together(), decided in
-      /// every assemble_mass()): then matrix[0] is the unconstrained M and
-      /// matrix[d > 0] is not assembled; per component the locally owned
-      /// rows (owned order) it fixes, and the solver's columns.
-      bool together = false;
-      /// Per component, whether Dirichlet conditions fix every DoF on
-      /// every rank (e.g. y of a bar between rollers): its solution is
-      /// zero, and its matrix is neither assembled nor solved.
-      std::array<bool, dim> fully_fixed{};
-      /// Per component, whether no DoF is constrained on any rank (a free
-      /// body): its solves keep Solver tolerance alone, so that momentum
-      /// (and, with every component free, angular momentum) stays
-      /// conserved to round-off; Step tolerance applies to the others.
-      std::array<bool, dim>                  free_component{};
-      std::vector<std::vector<unsigned int>> fixed_rows;
-      ComponentCG                            component_cg;
-      std::unique_ptr<Epetra_MultiVector>    rhs_columns, solution_columns;
-      /// Direct solves (Parameters::direct_size): whether this run may use
-      /// them, and per component whether this step's matrix was factored.
-      bool direct = false;
-      /// Scratch of solve() and solve_consistent().
-      TrilinosWrappers::MPI::Vector  rhs_vector, solution_vector;
-      std::vector<double>            local_solution;
-      std::array<DenseCholesky, dim> dense;
-      std::array<bool, dim>          factored{};
-      TrilinosWrappers::MPI::Vector  lumped;   // owned
-      TrilinosWrappers::MPI::Vector  writable; // owned + writable ghosts
-      /// Scratch of const functions (no state between calls).
-      mutable std::vector<double> scratch;
-      /// Sums and ghost values between ranks (unused on one rank).
-      GhostExchange exchange;
-      CellExchange  cells_exchange;
+      std::unique_ptr<MassStrategy<dim>> mass_strategy;
+      SamplingStabilization<dim>         sampling;
+      const Basis::Space<dim>           &space;
+      const DoFHandler<dim>             &dof_handler;
+      MPI_Comm                           comm;
+      /// The local relevant numbering and the moves of values in it.
+      GridDofLayout<dim>        layout;
+      ComponentConstraints<dim> component_constraints;
+      CellArrays                cells;
+      std::vector<PatchBlock>   patches;
+      VertexTables              vertices;
+      /// Owners' per-cell values to the cells around their vertices.
+      CellExchange cells_exchange;
+      /// The components' matrices (matrix strategies), their sparsity and
+      /// the assembly of the cell and patch blocks.
+      GridMatrices<dim> matrices;
+      /// The solves with those matrices and their preconditioners.
+      MassSolver<dim> mass_solver;
+      /// Scratch of solve() (solution_vector also of particle_diagonal()):
+      /// constructing a Trilinos vector costs more than the whole solve of
+      /// a small system.
+      TrilinosWrappers::MPI::Vector rhs_vector, solution_vector;
+      std::vector<double>           local_solution;
+      TrilinosWrappers::MPI::Vector lumped;   // owned
+      TrilinosWrappers::MPI::Vector writable; // owned + writable ghosts
       /// Per-cell scratch of particle_diagonal() and its result.
       std::vector<double> cell_scratch, diagonal_scratch;
-      /// Local relevant index of the j-th owned DoF: owned vectors (the
-      /// owned entries of writable ones) are read and written through
-      /// their value arrays in this order, without Epetra's index maps.
-      std::vector<unsigned int> owned_to_relevant;
-      /// One rank: relevant == owned, and vectors are copied as arrays.
-      bool                owned_is_relevant = false;
       std::vector<double> local_lumped;
       std::vector<double> local_full_diagonal;
       SolveStatistics     stats;
       double              density = 0;
-      /// Space::make_space_constraints() in local relevant numbering: a
-      /// tied DoF and the DoFs and weights it is tied to (empty for spaces
-      /// without ties, whose lumped path is then unchanged).
-      struct Tie
-      {
-        unsigned int                                 dof;
-        std::vector<std::pair<unsigned int, double>> targets;
-      };
-      std::vector<Tie> ties;
     };
   } // namespace Solver
 } // namespace psmpm

@@ -109,6 +109,14 @@ namespace psmpm
       };
       /// The step's lifts (usually none: only sparse layouts need them).
       std::vector<Lift> quadratic_lifts;
+
+      /// Add owned cell @p i's lift of the quadratic modes whose particle
+      /// mass @p B (Q_q^T M_c Q_q, upper triangle) leaves below the target
+      /// of the cell's density @p rho: each such eigenvector to the target.
+      void
+      lift_unseen_quadratics(const unsigned int i,
+                             const double       rho,
+                             double (&B)[n_modes][n_modes]);
     };
   } // namespace Solver
 } // namespace psmpm
