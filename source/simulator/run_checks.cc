@@ -27,20 +27,19 @@ namespace psmpm
       size.n_particles =
         Utilities::MPI::sum(double(state.particles.size()), comm);
       size.n_outputs = 2;
-      if (output_interval > 0)
-        size.n_outputs += std::floor(size.steps / output_interval);
+      if (output.interval > 0)
+        size.n_outputs += std::floor(size.steps / output.interval);
       if (output_time_interval > 0)
         size.n_outputs += std::floor(end / output_time_interval);
       // Compressed VTU: about 100 bytes per particle, and per sampling
       // point of the grid (a cell of s x s sub-triangles has about s^2
       // points of its own); a statistics row of about 400 bytes per step.
-      const double s =
-        subdivisions > 0 ? subdivisions : (state.space->degree() == 1 ? 1 : 4);
+      const double s = output.grid_subdivisions(state.space->degree());
       // HDF5 particle output is uncompressed doubles: 2 coordinates, a
       // 4-byte cell, 7 scalars, 2 vectors of 3, the dim x dim stress and
       // the material state.
       const double per_particle =
-        particle_format == Postprocess::ParticleFormat::hdf5 ?
+        output.particle_format == Postprocess::ParticleFormat::hdf5 ?
           4. + 8. * (2 + 7 + 6 + dim * dim +
                      state.particles.get_state_names().size()) :
           100.;
@@ -75,10 +74,11 @@ namespace psmpm
       const auto all = Utilities::MPI::all_gather(comm, where);
       for (const auto &w : all)
         AssertThrow(w.empty(),
-                    ExcMessage(
-                      "Initial conditions/Velocity = '" + velocity_expression +
-                      "' (Function constants = '" + velocity_constants +
-                      "') is not finite: the particle at " + w + "."));
+                    ExcMessage("Initial conditions/Velocity = '" +
+                               initial_conditions.velocity_expression +
+                               "' (Function constants = '" +
+                               initial_conditions.velocity_constants +
+                               "') is not finite: the particle at " + w + "."));
     }
 
     template RunSize

@@ -1,7 +1,6 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
@@ -57,13 +56,58 @@ namespace psmpm
         return {};
       }
 
-      /// Whether @p value is on a space's list of verified mass matrices
-      /// or transfers (an empty list: every one is).
-      bool
-      verified(const std::vector<std::string> &list, const std::string &value)
+      /// Body force/Gravity.
+      void
+      declare_gravity(ParameterHandler &prm)
       {
-        return list.empty() ||
-               std::find(list.begin(), list.end(), value) != list.end();
+        prm.enter_subsection("Body force");
+        prm.declare_entry("Gravity",
+                          "0, 0",
+                          Patterns::List(Patterns::Double(), 1, 2),
+                          "Gravitational acceleration vector [m/s^2], one "
+                          "component per dimension.");
+        prm.leave_subsection();
+      }
+
+      /// Body force/Gravity in @p dim components: the default "0, 0" must
+      /// work in 1D too, so components beyond dim are accepted only if
+      /// they are zero.
+      template <int dim>
+      Tensor<1, dim>
+      parse_gravity(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Body force");
+        const auto g = get_numbers(prm, "Body force", "Gravity");
+        prm.leave_subsection();
+        bool fits = g.size() >= dim;
+        for (unsigned int d = dim; d < g.size(); ++d)
+          fits = fits && g[d] == 0;
+        AssertThrow(fits,
+                    ExcMessage("Body force/Gravity = " + prm_value(g[0]) +
+                               (g.size() > 1 ? ", " + prm_value(g[1]) : "") +
+                               ": needs " + std::to_string(dim) +
+                               " component(s) in " + std::to_string(dim) +
+                               "D (further ones must be 0)."));
+        Tensor<1, dim> gravity;
+        for (unsigned int d = 0; d < dim; ++d)
+          gravity[d] = g[d];
+        return gravity;
+      }
+
+      /// Boundary conditions/Fixed x and Fixed y (BoundaryConditions
+      /// declares the rest of the subsection).
+      void
+      declare_fixed(ParameterHandler &prm)
+      {
+        prm.declare_entry("Fixed x",
+                          "left, right",
+                          Patterns::Anything(),
+                          "Boundaries (names) where the x velocity is zero.");
+        prm.declare_entry("Fixed y",
+                          "left, right, bottom, top",
+                          Patterns::Anything(),
+                          "Boundaries (names) where the y velocity is zero "
+                          "(2D only).");
       }
 
       /// The particle arrays' capacity once the particles are made or
@@ -109,76 +153,14 @@ namespace psmpm
       Checkpoint::declare_parameters(prm);
       Postprocess::OutputWriter<2>::declare_parameters(prm);
       Postprocessors<2>::declare_parameters(prm);
-
-      // Basis/Type lists the spaces of both dimensions (bspline is 1D
-      // only, powell-sabin 2D only); creation rejects the wrong one.
-      const auto &registry_1d   = Basis::SpaceRegistry<1>::instance();
-      const auto &registry_2d   = Basis::SpaceRegistry<2>::instance();
-      std::string selection     = registry_2d.selection();
-      std::string documentation = registry_2d.documentation();
-      for (const auto &name : registry_1d.variant_names())
-        if (!registry_2d.has(name))
-          {
-            selection += "|" + name;
-            documentation +=
-              "; " + name + " (1D only): " + registry_1d.description(name);
-          }
-      prm.enter_subsection("Basis");
-      prm.declare_entry("Type",
-                        "linear",
-                        Patterns::Selection(selection),
-                        documentation);
-      prm.declare_entry("Degree",
-                        "2",
-                        Patterns::Integer(1),
-                        "Polynomial degree of Basis/Type = bspline (1 to 5; "
-                        "lumped mass for 1 and 2 only); linear and "
-                        "powell-sabin have a fixed degree and ignore it.");
-      prm.leave_subsection();
-
-      prm.enter_subsection("Initial conditions");
-      prm.declare_entry(
-        "Velocity",
-        "v0*sin(pi*x/L); 0",
-        Patterns::Anything(),
-        "Initial velocity as a function of x, y: one component per "
-        "dimension, separated by ';'.");
-      prm.declare_entry("Function constants",
-                        "v0=0.1, L=25",
-                        Patterns::Anything(),
-                        "Constants for the velocity expression, name=value, "
-                        "comma separated (pi is predefined).");
-      prm.leave_subsection();
-      InitialStress<2>::declare_parameters(prm);
-
-      prm.enter_subsection("Body force");
-      prm.declare_entry("Gravity",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 1, 2),
-                        "Gravitational acceleration vector [m/s^2], one "
-                        "component per dimension.");
-      prm.leave_subsection();
-
+      Discretisation<2>::declare_parameters(prm);
+      InitialConditions<2>::declare_parameters(prm);
+      declare_gravity(prm);
       prm.enter_subsection("Boundary conditions");
-      prm.declare_entry("Fixed x",
-                        "left, right",
-                        Patterns::Anything(),
-                        "Boundaries (names) where the x velocity is zero.");
-      prm.declare_entry("Fixed y",
-                        "left, right, bottom, top",
-                        Patterns::Anything(),
-                        "Boundaries (names) where the y velocity is zero "
-                        "(2D only).");
+      declare_fixed(prm);
       BoundaryConditions<2>::declare_parameters(prm);
       prm.leave_subsection();
-
-      prm.enter_subsection("Output");
-      prm.declare_entry("Interval",
-                        "0",
-                        Patterns::Integer(0),
-                        "Write VTU output every this many steps (0: first and "
-                        "last step only).");
-      prm.leave_subsection();
+      OutputFiles<2>::declare_parameters(prm);
     }
 
     template <int dim>
@@ -193,111 +175,19 @@ namespace psmpm
       // particles get (the generator reads Body::density).
       for (auto &body : particle_generator.bodies.bodies)
         body.density = state.materials.of_body(body.number).density;
-      grid_parameters.parse_parameters(prm);
-      prm.enter_subsection("Basis");
-      basis_name   = prm.get("Type");
-      basis_degree = prm.get_integer("Degree");
-      prm.leave_subsection();
-      AssertThrow(Basis::SpaceRegistry<dim>::instance().has(basis_name),
-                  ExcMessage(
-                    "Basis/Type = " + basis_name + ": not available in " +
-                    std::to_string(dim) + "D (known: " +
-                    Basis::SpaceRegistry<dim>::instance().names() + ")."));
+      discretisation.parse_parameters(prm);
+      // "automatic" takes the space's measured defaults; the choice for a
+      // closed, filled mesh is made once the mesh is known
+      // (setup_space_and_grid).
+      transfers.parse_parameters(prm,
+                                 *discretisation.create_space(),
+                                 discretisation.grid_parameters);
 
-      // "automatic" takes the space's measured defaults. An explicit
-      // transfer is created first: the mass default depends on whether
-      // its grid moves; an automatic transfer follows the mass matrix.
-      const auto space = Basis::create_space<dim>(basis_name);
-      space->set_degree(basis_degree);
-      prm.enter_subsection("Transfer");
-      transfer_name       = prm.get("Scheme");
-      reconstruction_name = prm.get("Reconstruction");
-      reconstruction.reset();
-      if (reconstruction_name != "particles")
-        reconstruction =
-          ReconstructionRegistry<dim>::instance().create(reconstruction_name,
-                                                         "Transfer/"
-                                                         "Reconstruction",
-                                                         prm);
-      transfer.reset();
-      if (transfer_name != "automatic")
-        transfer =
-          TransferSchemeRegistry<dim>::instance().create(transfer_name,
-                                                         "Transfer/Scheme",
-                                                         prm);
-      const bool mass_automatic     = grid_parameters.type == "automatic";
-      const bool transfer_automatic = transfer_name == "automatic";
-      const bool grid_moves         = transfer && transfer->moves_grid();
-      if (mass_automatic)
-        grid_parameters.type = space->default_mass_matrix(grid_moves);
-      // The sampling stabilisation's cell matrices belong to the initial
-      // cells: not for a grid that moves with the material.
-      if (grid_parameters.sampling_stabilization < 0)
-        grid_parameters.sampling_stabilization =
-          mass_automatic && !grid_moves ? 0.5 : 0.;
-      AssertThrow(!(grid_moves && grid_parameters.sampling_stabilization > 0),
-                  ExcMessage("Mass matrix/Sampling stabilization = " +
-                             prm_value(grid_parameters.sampling_stabilization) +
-                             " with Transfer/Scheme = " + transfer_name +
-                             ": its cell matrices are those of the initial "
-                             "cells, and this transfer moves the grid; use "
-                             "0."));
-      if (transfer_automatic)
-        {
-          transfer_name = space->default_transfer(grid_parameters.type);
-          transfer =
-            TransferSchemeRegistry<dim>::instance().create(transfer_name,
-                                                           "Transfer/Scheme",
-                                                           prm);
-        }
-      // The choice for a closed, filled mesh is made once the mesh is
-      // known (setup_space_and_grid); its transfer is created here, where
-      // its parameters are.
-      // (Not for a space that was not verified with its closed-mesh
-      // choice: it keeps its own default.)
-      closed_rule =
-        mass_automatic && !grid_moves &&
-        verified(space->verified_mass_matrices(), space->closed_mass_matrix());
-      closed_transfer_name.clear();
-      closed_transfer.reset();
-      if (closed_rule)
-        {
-          closed_transfer_name =
-            transfer_automatic ?
-              space->default_transfer(space->closed_mass_matrix()) :
-              transfer_name;
-          if (closed_transfer_name != transfer_name)
-            closed_transfer =
-              TransferSchemeRegistry<dim>::instance()
-                .create(closed_transfer_name, "Transfer/Scheme", prm);
-        }
-      prm.leave_subsection();
-
-      prm.enter_subsection("Initial conditions");
-      velocity_expression = prm.get("Velocity");
-      velocity_constants  = prm.get("Function constants");
-      prm.leave_subsection();
-
-      prm.enter_subsection("Body force");
-      const auto g = get_numbers(prm, "Body force", "Gravity");
-      prm.leave_subsection();
-      // The default "0, 0" must work in 1D too: components beyond dim
-      // are accepted only if they are zero.
-      bool fits = g.size() >= dim;
-      for (unsigned int d = dim; d < g.size(); ++d)
-        fits = fits && g[d] == 0;
-      AssertThrow(fits,
-                  ExcMessage("Body force/Gravity = " + prm_value(g[0]) +
-                             (g.size() > 1 ? ", " + prm_value(g[1]) : "") +
-                             ": needs " + std::to_string(dim) +
-                             " component(s) in " + std::to_string(dim) +
-                             "D (further ones must be 0)."));
-      for (unsigned int d = 0; d < dim; ++d)
-        state.gravity[d] = g[d];
-      initial_stress.parse_parameters(prm,
-                                      state.materials,
-                                      particle_generator.bodies,
-                                      state.gravity);
+      state.gravity = parse_gravity<dim>(prm);
+      initial_conditions.parse_parameters(prm,
+                                          state.materials,
+                                          particle_generator.bodies,
+                                          state.gravity);
 
       prm.enter_subsection("Boundary conditions");
       const char *fixed_entries[] = {"Fixed x", "Fixed y"};
@@ -315,35 +205,13 @@ namespace psmpm
                                                       fixed_names);
 
       time_step_control.parse_parameters(prm);
-
-      prm.enter_subsection("Output");
-      output_interval = prm.get_integer("Interval");
-      subdivisions    = prm.get_integer("Subdivisions");
-      particle_format = Postprocess::OutputWriter<dim>::parse_particle_format(
-        prm.get("Particle format"));
-      prm.leave_subsection();
+      output.parse_parameters(prm);
       // Their own entries (Output/Error interval, Output/Tracked point).
       postprocessors.parse_parameters(prm);
-      // HDF5 (and XDMF) store points in 2 or 3 coordinates only.
-      AssertThrow(particle_format == Postprocess::ParticleFormat::vtu ||
-                    dim >= 2,
-                  ExcMessage("Output/Particle format = hdf5 needs "
-                             "Geometry/Dimension = 2; use vtu in 1D."));
-
+      output.check_particle_format();
       monitor.parse_parameters(prm);
       checkpoint.parse_parameters(prm);
-
-      // What a checkpoint of this run is compared with on resume.
-      std::ostringstream text;
-      prm.print_parameters(text, ParameterHandler::ShortPRM);
-      parameter_text = text.str();
-      // The declarations alone: entries added since a checkpoint was
-      // written are accepted on resume at their defaults.
-      ParameterHandler declared;
-      declare_parameters(declared);
-      std::ostringstream defaults;
-      declared.print_parameters(defaults, ParameterHandler::ShortPRM);
-      default_parameter_text = defaults.str();
+      scene_text.record(prm, &Simulator<dim>::declare_parameters);
     }
 
     template <int dim>
@@ -360,13 +228,13 @@ namespace psmpm
       };
       // A B-spline function of a ghost cell reaches cells (knot spans)
       // beyond the ghost layers.
-      refuse(basis_name == "linear" || basis_name == "powell-sabin",
-             "Basis/Type = " + basis_name);
-      refuse(reconstruction_name == "particles",
-             "Transfer/Reconstruction = " + reconstruction_name);
-      refuse(!transfer->moves_grid() &&
-               !(closed_transfer && closed_transfer->moves_grid()),
-             "Transfer/Scheme = " + transfer_name +
+      const std::string &basis = discretisation.basis_name;
+      refuse(basis == "linear" || basis == "powell-sabin",
+             "Basis/Type = " + basis);
+      refuse(transfers.reconstruction_name == "particles",
+             "Transfer/Reconstruction = " + transfers.reconstruction_name);
+      refuse(!transfers.may_move_grid(),
+             "Transfer/Scheme = " + transfers.name +
                " (a grid that moves with the material)");
     }
 
@@ -387,9 +255,9 @@ namespace psmpm
         std::make_unique<parallel::fullydistributed::Triangulation<dim>>(comm);
       // A Powell-Sabin function of a ghost cell (the ghost penalty's
       // pairs) is built from the cells around that cell's vertices.
-      state.whole_owner =
-        mesh_generator.create_distributed(*tria,
-                                          basis_name == "powell-sabin" ? 2 : 1);
+      state.whole_owner = mesh_generator.create_distributed(
+        *tria,
+        discretisation.basis_name == "powell-sabin" ? 2 : 1);
       state.whole_index.clear();
       for (const auto &cell : tria->active_cell_iterators())
         state.whole_index.push_back(cell->id().get_coarse_cell_id());
@@ -412,7 +280,7 @@ namespace psmpm
       time_step_control.initialize(state);
       setup_particles();
       state.evaluate_shape_functions();
-      transfer->initialize(state);
+      transfers.scheme->initialize(state);
       if (state.reconstruction)
         state.reconstruction->initialize(state);
     }
@@ -421,34 +289,29 @@ namespace psmpm
     void
     Simulator<dim>::setup_space_and_grid()
     {
-      state.space = Basis::create_space<dim>(basis_name);
-      state.space->set_degree(basis_degree);
-      // The space's functions live on one kind of cell (triangles for
-      // linear and powell-sabin, rectangles for the 2D bspline).
-      if constexpr (dim == 2)
-        {
-          const bool space_on_quads =
-            state.space->dof_layout().reference_cell() ==
-            ReferenceCells::Quadrilateral;
-          AssertThrow(space_on_quads == state.locator.cartesian(),
-                      ExcMessage(
-                        "Basis/Type = " + basis_name +
-                        (space_on_quads ?
-                           " needs a mesh of rectangles (Mesh/Type = "
-                           "cartesian); this mesh is of triangles." :
-                           " needs a mesh of triangles (Mesh/Type = "
-                           "criss-cross, diagonal or gmsh); Mesh/Type = "
-                           "cartesian is for Basis/Type = bspline.")));
-        }
-      state.dof_handler.reinit(*state.triangulation);
-      state.dof_handler.distribute_dofs(state.space->dof_layout());
-      state.space->reinit(state.dof_handler);
-      {
-        AffineConstraints<double> ties;
-        state.space->make_space_constraints(state.dof_handler, ties);
-        n_functions = state.dof_handler.n_dofs() - ties.n_constraints();
-      }
+      discretisation.setup_space(state);
+      auto fixed = fixed_boundary_ids();
+      boundary_conditions.add_constrained(fixed, mesh_generator);
+      if (closed_and_filled(fixed))
+        transfers.use_closed_choice(*state.space,
+                                    discretisation.grid_parameters);
+      transfers.check_and_install(state,
+                                  discretisation.grid_parameters.type,
+                                  discretisation.basis_name,
+                                  discretisation.basis_degree);
+      create_grid_system(fixed);
+      boundary_conditions.reinit(state,
+                                 fixed_names,
+                                 mesh_generator,
+                                 transfers.scheme->moves_grid());
+      state.boundary_conditions =
+        boundary_conditions.active() ? &boundary_conditions : nullptr;
+    }
 
+    template <int dim>
+    std::array<std::set<types::boundary_id>, dim>
+    Simulator<dim>::fixed_boundary_ids() const
+    {
       const char *fixed_entries[] = {"x", "y"};
       std::array<std::set<types::boundary_id>, dim> fixed;
       for (unsigned int d = 0; d < dim; ++d)
@@ -466,7 +329,14 @@ namespace psmpm
                               fixed_entries[d] + ": " + e.what()));
               }
           }
-      boundary_conditions.add_constrained(fixed, mesh_generator);
+      return fixed;
+    }
+
+    template <int dim>
+    bool
+    Simulator<dim>::closed_and_filled(
+      const std::array<std::set<types::boundary_id>, dim> &fixed) const
+    {
       // Material that fills a mesh whose boundaries are all closed in
       // their normal direction cannot leave it: `automatic` takes
       // partially lumped mass, the consistent matrix wherever no cell
@@ -477,67 +347,20 @@ namespace psmpm
       // lumped mass and APIC at the same CPU time (doc/transfers.md
       // "Defaults").
       // Both decided over all ranks: a distributed mesh is seen in part.
-      if (closed_rule &&
-          Utilities::MPI::min(
-            particle_generator.fills_mesh(*state.triangulation) ? 1 : 0,
-            comm) == 1 &&
-          Mesh::is_closed<dim>(*state.triangulation, fixed))
-        {
-          grid_parameters.type = state.space->closed_mass_matrix();
-          if (closed_transfer)
-            transfer = std::move(closed_transfer);
-          transfer_name = closed_transfer_name;
-        }
-      // A space with a restricted list names what it was verified with
-      // (and the degree: bspline's list depends on it).
-      const auto refuse = [&](const std::vector<std::string> &accepted,
-                              const std::string              &entry,
-                              const std::string              &value) {
-        if (verified(accepted, value))
-          return;
-        std::string list;
-        for (const auto &v : accepted)
-          list += (list.empty() ? "" : ", ") + v;
-        AssertThrow(false,
-                    ExcMessage(
-                      entry + " = " + value +
-                      ": not verified with Basis/Type = " + basis_name +
-                      ", Basis/Degree = " + std::to_string(basis_degree) +
-                      " (verified: " + list + ")."));
-      };
-      refuse(state.space->verified_mass_matrices(),
-             "Mass matrix/Type",
-             grid_parameters.type);
-      refuse(state.space->verified_transfers(),
-             "Transfer/Scheme",
-             transfer_name);
-      // A reconstruction names what it was verified with as well.
-      state.reconstruction.reset();
-      if (reconstruction_name != "particles")
-        {
-          state.reconstruction   = std::move(reconstruction);
-          const auto refuse_with = [&](const std::vector<std::string> &list,
-                                       const std::string              &entry,
-                                       const std::string              &value) {
-            std::string names;
-            for (const auto &v : list)
-              names += (names.empty() ? "" : ", ") + v;
-            AssertThrow(verified(list, value),
-                        ExcMessage(entry + " = " + value +
-                                   ": not verified with Transfer/"
-                                   "Reconstruction = " +
-                                   reconstruction_name +
-                                   " (verified: " + names + ")."));
-          };
-          refuse_with(state.reconstruction->verified_mass_matrices(),
-                      "Mass matrix/Type",
-                      grid_parameters.type);
-          refuse_with(state.reconstruction->verified_transfers(),
-                      "Transfer/Scheme",
-                      transfer_name);
-        }
-      closed_rule = false;
-      state.grid  = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
+      return transfers.closed_rule &&
+             Utilities::MPI::min(
+               particle_generator.fills_mesh(*state.triangulation) ? 1 : 0,
+               comm) == 1 &&
+             Mesh::is_closed<dim>(*state.triangulation, fixed);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::create_grid_system(
+      const std::array<std::set<types::boundary_id>, dim> &fixed)
+    {
+      const auto &grid_parameters = discretisation.grid_parameters;
+      state.grid = std::make_unique<Solver::GridSystem<dim>>(grid_parameters,
                                                              *state.space,
                                                              state.dof_handler,
                                                              comm);
@@ -553,12 +376,6 @@ namespace psmpm
       // a lighter body's full cells then count as partly filled (more rows
       // lumped, stable), never a heavier body's nearly empty ones as full.
       state.grid->reinit(fixed, state.materials.max_density());
-      boundary_conditions.reinit(state,
-                                 fixed_names,
-                                 mesh_generator,
-                                 transfer->moves_grid());
-      state.boundary_conditions =
-        boundary_conditions.active() ? &boundary_conditions : nullptr;
     }
 
     template <int dim>
@@ -586,55 +403,17 @@ namespace psmpm
       state.materials.initialize(particles);
       // A resumed run replaces these particles by its checkpoint's, whose
       // stress already started from this.
-      initial_stress.apply(
+      initial_conditions.stress.apply(
         particles,
         state.materials,
         state.gravity,
         InitialStress<dim>::lattice_spacing(mesh_generator, particle_generator),
         comm);
-
-      const auto constants = parse_function_constants(velocity_constants);
       // The affine transfers start from the initial velocity gradient
-      // (C_p = grad v): fourth-order differences with h = 1e-4 are exact
-      // to round-off for the affine fields they must carry. The others
-      // never update C_p, so it stays zero for them (a stale C_p would
-      // enter the reported angular momentum). The transfer is final here
-      // (setup_space_and_grid). Without Bodies one expression for all
-      // particles; with them, each body's own.
-      const bool affine       = transfer->carries_affine();
-      const auto set_velocity = [&](const std::string &expression,
-                                    const std::string &entry,
-                                    const unsigned int body) {
-        FunctionParser<dim> velocity(dim, 0., 1e-4);
-        velocity.set_formula(AutoDerivativeFunction<dim>::FourthOrder);
-        try
-          {
-            velocity.initialize(dim == 1 ? "x" : "x,y", expression, constants);
-            for (std::size_t i = 0; i < particles.size(); ++i)
-              if (particles.body_id[i] == body)
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    particles.velocity[i][d] =
-                      velocity.value(particles.position[i], d);
-                    if (affine)
-                      particles.affine[i][d] =
-                        velocity.gradient(particles.position[i], d);
-                  }
-          }
-        catch (const std::exception &e)
-          {
-            AssertThrow(false,
-                        ExcMessage(entry + " = '" + expression +
-                                   "': " + e.what()));
-          }
-      };
-      const auto &bodies = particle_generator.bodies.bodies;
-      if (bodies.empty())
-        set_velocity(velocity_expression, "Initial conditions/Velocity", 0);
-      for (const auto &body : bodies)
-        set_velocity(body.velocity,
-                     body.name() + "/Initial velocity",
-                     body.number);
+      // (C_p = grad v); the transfer is final here (setup_space_and_grid).
+      initial_conditions.set_velocities(particles,
+                                        particle_generator.bodies,
+                                        transfers.scheme->carries_affine());
       particles.sort_by_cell(state.triangulation->n_active_cells());
       set_particle_capacity(particles, comm);
     }
@@ -653,21 +432,21 @@ namespace psmpm
     void
     Simulator<dim>::do_time_step(const double dt)
     {
-      state.dt = dt;
-      transfer->observe_updated_chunks(
-        transfer->carries_affine() ||
-            !postprocessors.observes_updated_chunks() ?
+      TransferScheme<dim> &transfer = *transfers.scheme;
+      state.dt                      = dt;
+      transfer.observe_updated_chunks(
+        transfer.carries_affine() || !postprocessors.observes_updated_chunks() ?
           nullptr :
           &postprocessors);
       // On a grid that moves with the material the particles keep their
       // cells (and the scheme has evaluated the basis on the moved grid).
       // Otherwise the scheme may locate them chunk by chunk as it moves
       // them; if it did not, they are located here.
-      transfer->relocate_with(transfer->moves_grid() ? nullptr : &relocation);
-      if (!transfer->step(state, monitor, timer))
+      transfer.relocate_with(transfer.moves_grid() ? nullptr : &relocation);
+      if (!transfer.step(state, monitor, timer))
         return;
-      total_iterations += state.grid->statistics().iterations;
-      if (!transfer->moves_grid() && !transfer->relocated())
+      record.total_iterations += state.grid->statistics().iterations;
+      if (!transfer.moves_grid() && !transfer.relocated())
         locate_particles();
       state.time = time_step_control.snap(state.time + dt);
     }
@@ -677,7 +456,7 @@ namespace psmpm
     Simulator<dim>::next_time_step()
     {
       const bool warned = !time_step_control.grid_warning().empty();
-      time_step_control.update(state, transfer->minimum_height(state));
+      time_step_control.update(state, transfers.scheme->minimum_height(state));
       if (!warned && !time_step_control.grid_warning().empty() && !quiet)
         pcout << "psmpm: warning: " << time_step_control.grid_warning()
               << std::endl;
@@ -709,9 +488,9 @@ namespace psmpm
     {
       Postprocess::StateView<dim> v = state;
       v.reference                   = reference.get();
-      v.carries_affine              = transfer && transfer->carries_affine();
-      v.last_step                   = time_step_control.finished(state.time);
-      v.output_directory            = output_directory;
+      v.carries_affine = transfers.scheme && transfers.scheme->carries_affine();
+      v.last_step      = time_step_control.finished(state.time);
+      v.output_directory = output.directory;
       return v;
     }
 
@@ -720,6 +499,7 @@ namespace psmpm
     Simulator<dim>::postprocess(const double wall_time)
     {
       PhaseTimer::Scope t(timer, "statistics");
+      auto             &statistics = output.statistics;
       statistics.add_value("step", state.step);
       statistics.add_value("time", state.time);
       statistics.add_value("dt", state.dt);
@@ -727,7 +507,7 @@ namespace psmpm
       // is at the step's time before the postprocessors compare with it.
       if (reference)
         {
-          step_times.push_back(state.time);
+          record.step_times.push_back(state.time);
           reference->advance_to(state.time);
         }
       postprocessors.execute(view(), statistics);
@@ -741,13 +521,13 @@ namespace psmpm
           total_energy =
             boundary_conditions.monitored_energy(total_energy, state.step);
         }
-      statistics.add_value("wall_time", wall_offset + wall_time);
+      statistics.add_value("wall_time", record.wall_offset + wall_time);
       if (monitor.check(total_energy, e.scale, e.momentum, comm) &&
-          status == Status::completed)
+          record.status == Status::completed)
         {
-          status      = Status::unstable;
-          failed_step = state.step;
-          failed_time = state.time;
+          record.status      = Status::unstable;
+          record.failed_step = state.step;
+          record.failed_time = state.time;
         }
     }
 
@@ -756,16 +536,16 @@ namespace psmpm
     Simulator<dim>::write_output()
     {
       PhaseTimer::Scope t(timer, "output");
-      writer->write_particles(state.step, state.time, state.particles);
-      writer->write_grid(state.step,
-                         state.time,
-                         state.dof_handler,
-                         *state.space,
-                         state.grid->cell_dofs(),
-                         {{"velocity", &state.grid_velocity},
-                          {"acceleration", &state.grid_acceleration}},
-                         {{"mass", &state.grid->lumped_mass()}},
-                         transfer->moved_vertices());
+      output.writer->write_particles(state.step, state.time, state.particles);
+      output.writer->write_grid(state.step,
+                                state.time,
+                                state.dof_handler,
+                                *state.space,
+                                state.grid->cell_dofs(),
+                                {{"velocity", &state.grid_velocity},
+                                 {"acceleration", &state.grid_acceleration}},
+                                {{"mass", &state.grid->lumped_mass()}},
+                                transfers.scheme->moved_vertices());
       write_statistics();
       postprocessors.write(view());
     }
@@ -775,96 +555,61 @@ namespace psmpm
     Simulator<dim>::write_statistics()
     {
       if (Utilities::MPI::this_mpi_process(comm) == 0)
-        {
-          // The postprocessors format their own columns.
-          std::vector<std::string> columns = {"time", "dt", "wall_time"};
-          if (state.boundary_conditions)
-            {
-              for (const auto &c : boundary_conditions.statistics_columns())
-                columns.push_back(c);
-            }
-          for (const auto &c : columns)
-            {
-              statistics.set_scientific(c, true);
-              statistics.set_precision(c, 8);
-            }
-          const std::string file = output_directory + "/statistics.txt";
-          if (!statistics_file || statistics_file->name() != file)
-            statistics_file = std::make_unique<GrowingTextFile>(file);
-          statistics_file->write(
-            statistics.layout(),
-            statistics.n_rows(),
-            [this](std::ostream &out) { statistics.write_header(out); },
-            [this](std::ostream      &out,
-                   const unsigned int begin,
-                   const unsigned int end) {
-              statistics.write_rows(out, begin, end);
-            });
-        }
+        output.write_statistics(state.boundary_conditions ?
+                                  boundary_conditions.statistics_columns() :
+                                  std::vector<std::string>());
     }
 
     template <int dim>
     void
     Simulator<dim>::create_postprocessors(const std::string &directory)
     {
-      output_directory = directory;
-      // Linear fields are exact at the corners; sub-cells cost output
-      // volume (16x for 4) that only higher degrees need.
-      const unsigned int s =
-        subdivisions > 0 ? subdivisions : (state.space->degree() == 1 ? 1 : 4);
-      writer =
-        std::make_unique<Postprocess::OutputWriter<dim>>(directory,
-                                                         comm,
-                                                         s,
-                                                         particle_format);
+      output.create_writer(directory, comm, state.space->degree());
       postprocessors.initialize(view());
     }
 
     template <int dim>
-    Status
-    Simulator<dim>::run(const std::string &directory)
+    template <typename Write>
+    void
+    Simulator<dim>::checked(const Write &write)
     {
-      const bool resumed = !resumed_from.empty();
+      std::string error;
+      try
+        {
+          write();
+        }
+      catch (const ExcWriteFailed &e)
+        {
+          error = e.what();
+        }
+      for (const auto &e : Utilities::MPI::all_gather(comm, error))
+        if (!e.empty())
+          throw ExcWriteFailed(e);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::begin_run(const std::string &directory)
+    {
+      const bool resumed = !record.resumed_from.empty();
       if (!resumed)
         create_postprocessors(directory);
-      AssertThrow(directory == output_directory,
+      AssertThrow(directory == output.directory,
                   ExcMessage("resume() and run() name different output "
                              "directories."));
-      wall.reset();
-      wall.start();
-      // Every rank learns of a failed write (the first message wins) and
-      // the run ends with ExcWriteFailed on all of them.
-      const auto checked = [this](const auto &write) {
-        std::string error;
-        try
-          {
-            write();
-          }
-        catch (const ExcWriteFailed &e)
-          {
-            error = e.what();
-          }
-        for (const auto &e : Utilities::MPI::all_gather(comm, error))
-          if (!e.empty())
-            throw ExcWriteFailed(e);
-      };
-      const auto checked_write_output = [&]() {
-        checked([this]() { write_output(); });
-      };
-      // A resumed run keeps the fields of its checkpoint: the initial
-      // guesses of its first solves.
+      record.wall.reset();
+      record.wall.start();
       if (!resumed)
         {
+          // A resumed run keeps the fields of its checkpoint: the initial
+          // guesses of its first solves.
           state.grid_velocity.assign(state.grid->relevant_dofs().n_elements(),
                                      Tensor<1, dim>());
           state.grid_acceleration = state.grid_velocity;
-        }
-      if (!resumed)
-        {
-          state.dt = 0;
+          state.dt                = 0;
           postprocessors.start(view());
           postprocess(0);
-          checked_write_output();
+          checked([this]() { write_output(); });
           checkpoint.start(state.step);
         }
       else
@@ -873,17 +618,41 @@ namespace psmpm
           // after it (and was killed) wrote rows and outputs beyond it.
           checked([this]() { restore_files(); });
           if (!quiet)
-            pcout << "psmpm: resumed from " << resumed_from << " (step "
+            pcout << "psmpm: resumed from " << record.resumed_from << " (step "
                   << state.step << ", t = " << state.time << ")" << std::endl;
         }
 
       if (!time_step_control.warning().empty())
         pcout << "psmpm: warning: " << time_step_control.warning() << std::endl;
-      pcout << "psmpm: " << state.space->name() << " basis, " << n_functions
-            << " DoFs, " << Utilities::MPI::sum(state.particles.size(), comm)
+      pcout << "psmpm: " << state.space->name() << " basis, "
+            << discretisation.n_functions << " DoFs, "
+            << Utilities::MPI::sum(state.particles.size(), comm)
             << " particles, dt = " << time_step_control.get_time_step()
             << ", end time = " << time_step_control.get_end_time() << std::endl;
+    }
 
+    template <int dim>
+    bool
+    Simulator<dim>::output_due()
+    {
+      bool due = time_step_control.finished(state.time) ||
+                 record.status != Status::completed ||
+                 (output.interval > 0 && state.step % output.interval == 0);
+      if (output_time_interval > 0)
+        {
+          const auto passed = static_cast<unsigned int>(
+            std::floor(state.time / output_time_interval * (1 + 1e-12)));
+          due                 = due || passed > record.time_outputs;
+          record.time_outputs = std::max(record.time_outputs, passed);
+        }
+      return due;
+    }
+
+    template <int dim>
+    Status
+    Simulator<dim>::run(const std::string &directory)
+    {
+      begin_run(directory);
       // The algorithm: step, measure, check, write. A stop request
       // (SIGINT, SIGTERM) ends the loop after the step in which all ranks
       // learn of it; output is written then, as after the last step.
@@ -896,27 +665,18 @@ namespace psmpm
       // and its ~200 libraries costs ~0.45 CPU s on this machine) and
       // set-up excluded, for error against CPU time on small scenes.
       const double cpu_at_start = process_cpu_seconds();
+      Status      &status       = record.status;
       while (!time_step_control.finished(state.time) &&
              status == Status::completed)
         {
           do_time_step(next_time_step());
           ++state.step;
-          postprocess(wall.wall_time());
+          postprocess(record.wall.wall_time());
           if (status == Status::completed &&
               (stop_signal = StopRequest::agreed(comm)) != 0)
             status = Status::interrupted;
-          bool due = time_step_control.finished(state.time) ||
-                     status != Status::completed ||
-                     (output_interval > 0 && state.step % output_interval == 0);
-          if (output_time_interval > 0)
-            {
-              const auto passed = static_cast<unsigned int>(
-                std::floor(state.time / output_time_interval * (1 + 1e-12)));
-              due          = due || passed > time_outputs;
-              time_outputs = std::max(time_outputs, passed);
-            }
-          if (due)
-            checked_write_output();
+          if (output_due())
+            checked([this]() { write_output(); });
           if (status == Status::completed && checkpoint.due(state.step, comm))
             checked([this]() { write_checkpoint(); });
           progress.update(state.step,
@@ -927,20 +687,26 @@ namespace psmpm
       // continue from (an unstable state is not worth continuing).
       if (status != Status::unstable && checkpoint.last_step() != state.step)
         checked([this]() { write_checkpoint(); });
-      cpu_time_loop = process_cpu_seconds() - cpu_at_start;
-      wall.stop();
-      if (!quiet)
-        {
-          timer.print_wall_time_statistics();
-          if (status == Status::unstable)
-            pcout << "psmpm: UNSTABLE at step " << failed_step << ": "
-                  << monitor.reason() << std::endl;
-          if (status == Status::interrupted)
-            pcout << "psmpm: interrupted by signal " << stop_signal
-                  << " after step " << state.step << " (t = " << state.time
-                  << "); output written." << std::endl;
-        }
+      record.cpu_time_loop = process_cpu_seconds() - cpu_at_start;
+      record.wall.stop();
+      report_end();
       return status;
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::report_end() const
+    {
+      if (quiet)
+        return;
+      timer.print_wall_time_statistics();
+      if (record.status == Status::unstable)
+        pcout << "psmpm: UNSTABLE at step " << record.failed_step << ": "
+              << monitor.reason() << std::endl;
+      if (record.status == Status::interrupted)
+        pcout << "psmpm: interrupted by signal " << stop_signal
+              << " after step " << state.step << " (t = " << state.time
+              << "); output written." << std::endl;
     }
 
     namespace
@@ -1008,6 +774,73 @@ namespace psmpm
       }
     } // namespace
 
+    namespace
+    {
+      /// "what" of @p e, trimmed.
+      std::string
+      message(const ExceptionBase &e)
+      {
+        std::ostringstream s;
+        e.print_info(s);
+        return Utilities::trim(s.str());
+      }
+
+      /// Read the first readable of @p files (newest first) into
+      /// @p archive; @p file is set to it (or the last one tried). A
+      /// damaged newer file is reported on std::cerr if @p warn. Returns
+      /// the errors of all files if none could be read.
+      std::string
+      read_first_readable(const std::vector<std::string> &files,
+                          const bool                      warn,
+                          Archive                        &archive,
+                          std::string                    &file)
+      {
+        std::string damaged;
+        for (const auto &f : files)
+          {
+            file = f;
+            try
+              {
+                archive = Archive::read_hdf5(f);
+                return "";
+              }
+            catch (const ExceptionBase &e)
+              {
+                damaged += (damaged.empty() ? "" : "; ") + message(e);
+                if (warn && f != files.back())
+                  std::cerr << "psmpm: warning: " << message(e)
+                            << "; trying the previous checkpoint" << std::endl;
+              }
+          }
+        return damaged;
+      }
+
+      /// Throw ExcMessage unless @p archive is a checkpoint of this format
+      /// written with the parameters of @p scene (but those that may
+      /// change on resume).
+      void
+      check_archive(const Archive &archive, const SceneText &scene)
+      {
+        AssertThrow(archive.has("psmpm/format") &&
+                      archive.get_text("psmpm/format") == checkpoint_format,
+                    ExcMessage("not a psmpm checkpoint of format '" +
+                               std::string(checkpoint_format) + "'"));
+        const auto differences =
+          Checkpoint::parameter_differences(archive.get_text(
+                                              "psmpm/parameters"),
+                                            scene.parameters,
+                                            scene.defaults);
+        std::string list;
+        for (const auto &d : differences)
+          list += (list.empty() ? "" : "; ") + d;
+        AssertThrow(differences.empty(),
+                    ExcMessage("written with other parameters (" + list +
+                               "); only Time/End time, the Output and "
+                               "Checkpoint intervals and Limits may change "
+                               "when resuming"));
+      }
+    } // namespace
+
     template <int dim>
     void
     Simulator<dim>::write_checkpoint()
@@ -1016,7 +849,7 @@ namespace psmpm
       Archive           archive;
       archive.put_text("psmpm/format", checkpoint_format);
       archive.put_text("psmpm/version", version());
-      archive.put_text("psmpm/parameters", parameter_text);
+      archive.put_text("psmpm/parameters", scene_text.parameters);
       archive.put_integer("psmpm/dimension", dim);
       archive.put_integer("psmpm/n_mpi_ranks",
                           Utilities::MPI::n_mpi_processes(comm));
@@ -1024,21 +857,18 @@ namespace psmpm
       archive.put("simulator/time", state.time);
       archive.put_integer("simulator/step", state.step);
       archive.put("simulator/dt", state.dt);
-      archive.put_integer("simulator/cg_iterations", total_iterations);
-      archive.put_integer("simulator/time_outputs", time_outputs);
-      archive.put("simulator/wall_time", wall_offset + wall.wall_time());
-      archive.put("simulator/step_times", step_times);
+      record.save(archive);
       // The rows so far, exactly (doubles, integers and "-" entries with
       // their column formats).
-      archive.put_bytes("simulator/statistics", statistics.to_bytes());
+      archive.put_bytes("simulator/statistics", output.statistics.to_bytes());
 
       time_step_control.save(archive);
       monitor.save(archive);
       postprocessors.save(archive);
       if (state.boundary_conditions)
         boundary_conditions.save(archive);
-      writer->save(archive);
-      transfer->save(archive, state);
+      output.writer->save(archive);
+      transfers.scheme->save(archive, state);
       // The same on every rank where a vertex is seen, 0 elsewhere.
       std::vector<double> history = state.grid->strategy().history();
       history.resize(Utilities::MPI::max(history.size(), comm), 0.);
@@ -1052,9 +882,9 @@ namespace psmpm
                                    archive,
                                    comm,
                                    state.whole_index);
-      checkpoint.write(output_directory, state.step, archive, comm);
+      checkpoint.write(output.directory, state.step, archive, comm);
       if (!quiet)
-        pcout << "psmpm: checkpoint " << output_directory << "/"
+        pcout << "psmpm: checkpoint " << output.directory << "/"
               << Checkpoint::file_name(state.step) << std::endl;
     }
 
@@ -1065,63 +895,43 @@ namespace psmpm
     {
       AssertThrow(!files.empty(), ExcMessage("no checkpoint to resume from"));
       create_postprocessors(directory);
+      Archive           archive;
+      const std::string file = read_checkpoint(files, archive);
+      try
+        {
+          restore(archive);
+        }
+      catch (const ExceptionBase &e)
+        {
+          AssertThrow(false,
+                      ExcMessage("checkpoint " + file + ": " + message(e)));
+        }
+      check_end_time(file);
+      record.resumed_from = file;
+      record.resumed_step = state.step;
+      checkpoint.start(state.step);
+    }
 
+    template <int dim>
+    std::string
+    Simulator<dim>::read_checkpoint(const std::vector<std::string> &files,
+                                    Archive                        &archive)
+    {
       // Rank 0 reads the newest readable file and checks it; every rank
       // learns the verdict.
-      Archive     archive;
       std::string error, file = files[0];
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         {
-          std::string damaged;
-          for (const auto &f : files)
-            {
-              file = f;
-              try
-                {
-                  archive = Archive::read_hdf5(f);
-                  damaged.clear();
-                  break;
-                }
-              catch (const ExceptionBase &e)
-                {
-                  std::ostringstream s;
-                  e.print_info(s);
-                  damaged +=
-                    (damaged.empty() ? "" : "; ") + Utilities::trim(s.str());
-                  if (!quiet && f != files.back())
-                    std::cerr << "psmpm: warning: " << Utilities::trim(s.str())
-                              << "; trying the previous checkpoint"
-                              << std::endl;
-                }
-            }
+          const std::string damaged =
+            read_first_readable(files, !quiet, archive, file);
           try
             {
               AssertThrow(damaged.empty(), ExcMessage(damaged));
-              AssertThrow(archive.has("psmpm/format") &&
-                            archive.get_text("psmpm/format") ==
-                              checkpoint_format,
-                          ExcMessage("not a psmpm checkpoint of format '" +
-                                     std::string(checkpoint_format) + "'"));
-              const auto differences =
-                Checkpoint::parameter_differences(archive.get_text(
-                                                    "psmpm/parameters"),
-                                                  parameter_text,
-                                                  default_parameter_text);
-              std::string list;
-              for (const auto &d : differences)
-                list += (list.empty() ? "" : "; ") + d;
-              AssertThrow(differences.empty(),
-                          ExcMessage(
-                            "written with other parameters (" + list +
-                            "); only Time/End time, the Output and "
-                            "Checkpoint intervals and Limits may change "
-                            "when resuming"));
+              check_archive(archive, scene_text);
             }
           catch (const ExceptionBase &e)
             {
-              std::ostringstream s;
-              e.print_info(s);
-              error = Utilities::trim(s.str());
+              error = message(e);
             }
           catch (const std::exception &e)
             {
@@ -1137,66 +947,77 @@ namespace psmpm
             error = "checkpoint " + file + ": " + error;
           AssertThrow(false, ExcMessage(error));
         }
+      return file;
+    }
 
-      try
+    template <int dim>
+    void
+    Simulator<dim>::restore(Archive &archive)
+    {
+      // Every rank needs everything but the particles, which go to the
+      // ranks owning their cells.
+      Archive shared = archive;
+      shared.erase_prefix("particles/");
+      shared = Utilities::MPI::broadcast(comm, shared, 0);
+      restore_particles(archive);
+      archive = Archive();
+      restore_components(shared);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::restore_particles(const Archive &archive)
+    {
+      // The file names cells by their index in the whole mesh.
+      Checkpoint::scatter_particles(archive,
+                                    state.whole_index.empty() ?
+                                      state.cell_owner :
+                                      state.whole_owner,
+                                    state.particles,
+                                    comm);
+      for (auto &c : state.particles.cell)
         {
-          // Every rank needs everything but the particles, which go to
-          // the ranks owning their cells.
-          Archive shared = archive;
-          shared.erase_prefix("particles/");
-          shared = Utilities::MPI::broadcast(comm, shared, 0);
-          // The file names cells by their index in the whole mesh.
-          Checkpoint::scatter_particles(archive,
-                                        state.whole_index.empty() ?
-                                          state.cell_owner :
-                                          state.whole_owner,
-                                        state.particles,
-                                        comm);
-          for (auto &c : state.particles.cell)
-            {
-              c = state.local_cell(c);
-              AssertThrow(c != numbers::invalid_unsigned_int,
-                          ExcInternalError());
-            }
-          set_particle_capacity(state.particles, comm);
-          archive = Archive();
-
-          state.time       = shared.get_number("simulator/time");
-          state.step       = shared.get_integer("simulator/step");
-          state.dt         = shared.get_number("simulator/dt");
-          total_iterations = shared.get_integer("simulator/cg_iterations");
-          time_outputs     = shared.get_integer("simulator/time_outputs");
-          wall_offset      = shared.get_number("simulator/wall_time");
-          statistics.from_bytes(shared.get_bytes("simulator/statistics"));
-          time_step_control.load(shared);
-          monitor.load(shared);
-          postprocessors.load(shared);
-          if (state.boundary_conditions)
-            boundary_conditions.load(shared);
-          writer->load(shared);
-          state.grid->strategy().restore_history(
-            shared.get("mass_strategy/history"));
-          // The basis at the restored particles; a scheme with its own
-          // grid (OTM) evaluates it there in load().
-          state.evaluate_shape_functions();
-          transfer->load(shared, state);
-          get_grid_fields(shared, state, comm);
-
-          // References computed alongside the run (ULFEM, the cantilever)
-          // are deterministic in the times they are advanced to.
-          step_times = shared.get("simulator/step_times");
-          if (reference)
-            for (const double t : step_times)
-              reference->advance_to(t);
+          c = state.local_cell(c);
+          AssertThrow(c != numbers::invalid_unsigned_int, ExcInternalError());
         }
-      catch (const ExceptionBase &e)
-        {
-          std::ostringstream s;
-          e.print_info(s);
-          AssertThrow(false,
-                      ExcMessage("checkpoint " + file + ": " +
-                                 Utilities::trim(s.str())));
-        }
+      set_particle_capacity(state.particles, comm);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::restore_components(const Archive &shared)
+    {
+      state.time = shared.get_number("simulator/time");
+      state.step = shared.get_integer("simulator/step");
+      state.dt   = shared.get_number("simulator/dt");
+      record.load(shared);
+      output.statistics.from_bytes(shared.get_bytes("simulator/statistics"));
+      time_step_control.load(shared);
+      monitor.load(shared);
+      postprocessors.load(shared);
+      if (state.boundary_conditions)
+        boundary_conditions.load(shared);
+      output.writer->load(shared);
+      state.grid->strategy().restore_history(
+        shared.get("mass_strategy/history"));
+      // The basis at the restored particles; a scheme with its own grid
+      // (OTM) evaluates it there in load().
+      state.evaluate_shape_functions();
+      transfers.scheme->load(shared, state);
+      get_grid_fields(shared, state, comm);
+
+      // References computed alongside the run (ULFEM, the cantilever) are
+      // deterministic in the times they are advanced to.
+      record.step_times = shared.get("simulator/step_times");
+      if (reference)
+        for (const double t : record.step_times)
+          reference->advance_to(t);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::check_end_time(const std::string &file) const
+    {
       // A checkpoint past the end asked for (by more than the sliver of
       // round-off that snap() forgives at the end of a run) would run no
       // step and end "completed" at the checkpoint's time, not at Time/End
@@ -1211,9 +1032,6 @@ namespace psmpm
                              "; a resumed run continues from its checkpoint, "
                              "so Time/End time must be at least " +
                              prm_value(state.time) + "."));
-      resumed_from = file;
-      resumed_step = state.step;
-      checkpoint.start(state.step);
     }
 
     template <int dim>
@@ -1221,16 +1039,16 @@ namespace psmpm
     Simulator<dim>::restore_files()
     {
       write_statistics();
-      writer->restore_files(state.step);
+      output.writer->restore_files(state.step);
       postprocessors.write(view());
     }
 
     template <int dim>
     void
-    Simulator<dim>::fill_summary(Summary &summary) const
+    Simulator<dim>::fill_status(Summary &summary) const
     {
-      summary.set("status", status_name(status));
-      if (status == Status::interrupted)
+      summary.set("status", status_name(record.status));
+      if (record.status == Status::interrupted)
         {
           summary.set("reason",
                       "stopped by signal " + std::to_string(stop_signal) +
@@ -1240,28 +1058,33 @@ namespace psmpm
                                                   ""));
           summary.set_integer("signal", stop_signal);
         }
-      if (status == Status::unstable)
+      if (record.status == Status::unstable)
         {
           summary.set("reason", monitor.reason());
-          summary.set_integer("failed_step", failed_step);
-          summary.set("failed_time", failed_time);
+          summary.set_integer("failed_step", record.failed_step);
+          summary.set("failed_time", record.failed_time);
         }
       summary.set_integer("steps", state.step);
-      if (!resumed_from.empty())
+      if (!record.resumed_from.empty())
         {
-          summary.set("resumed_from", resumed_from);
-          summary.set_integer("resumed_step", resumed_step);
+          summary.set("resumed_from", record.resumed_from);
+          summary.set_integer("resumed_step", record.resumed_step);
         }
-      {
-        std::string warning = time_step_control.warning();
-        if (!time_step_control.grid_warning().empty())
-          warning +=
-            (warning.empty() ? "" : " ") + time_step_control.grid_warning();
-        if (!warning.empty())
-          summary.set("warning", warning);
-      }
+      std::string warning = time_step_control.warning();
+      if (!time_step_control.grid_warning().empty())
+        warning +=
+          (warning.empty() ? "" : " ") + time_step_control.grid_warning();
+      if (!warning.empty())
+        summary.set("warning", warning);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::fill_summary(Summary &summary) const
+    {
+      fill_status(summary);
       summary.set_integer("dimension", dim);
-      summary.set_integer("n_dofs", n_functions);
+      summary.set_integer("n_dofs", discretisation.n_functions);
       summary.set_integer("n_cells",
                           state.triangulation->n_global_active_cells());
       // What a rank holds: every cell (replicated) or its part with the
@@ -1274,7 +1097,7 @@ namespace psmpm
       summary.set_integer("n_particles",
                           Utilities::MPI::sum(state.particles.size(), comm));
       summary.set_integer("n_mpi_ranks", Utilities::MPI::n_mpi_processes(comm));
-      summary.set_integer("cg_iterations", total_iterations);
+      summary.set_integer("cg_iterations", record.total_iterations);
       summary.set_integer("cell_crossings",
                           Utilities::MPI::sum(relocation.cell_crossings(),
                                               comm));
@@ -1283,12 +1106,19 @@ namespace psmpm
       summary.set("time_step_min", time_step_control.get_min_time_step());
       summary.set("time_step_max", time_step_control.get_max_time_step());
       summary.set("basis", state.space->name());
-      summary.set("mass_matrix", grid_parameters.type);
+      summary.set("mass_matrix", discretisation.grid_parameters.type);
       summary.set("sampling_stabilization", state.grid->sampling_target());
-      summary.set("transfer", transfer_name);
-      summary.set("reconstruction", reconstruction_name);
+      summary.set("transfer", transfers.name);
+      summary.set("reconstruction", transfers.reconstruction_name);
       summary.set("material", state.materials.model_names());
       postprocessors.fill_summary(view(), summary);
+      fill_timings(summary);
+    }
+
+    template <int dim>
+    void
+    Simulator<dim>::fill_timings(Summary &summary) const
+    {
       // Throughput of the time loop proper: every timed phase but output
       // and checkpoints (the per-step statistics included: on large
       // scenes they cost as much as a particle loop).
@@ -1303,7 +1133,7 @@ namespace psmpm
             loop += t.second;
         }
       summary.set("time_loop_s", loop);
-      summary.set("cpu_time_loop_s", cpu_time_loop);
+      summary.set("cpu_time_loop_s", record.cpu_time_loop);
       if (loop > 0)
         summary.set("particle_steps_per_second",
                     summary.get_number("n_particles") * state.step / loop);

@@ -10,6 +10,7 @@
 
 #include <psmpm/base/growing_text_file.h>
 #include <psmpm/base/phase_timer.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/particles/particle_generator.h>
 #include <psmpm/postprocess/energies.h>
@@ -17,45 +18,34 @@
 #include <psmpm/postprocess/output_writer.h>
 #include <psmpm/postprocess/reference.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/base/summary.h>
 #include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/checkpoint.h>
-#include <psmpm/simulator/initial_stress.h>
+#include <psmpm/simulator/discretisation.h>
+#include <psmpm/simulator/initial_conditions.h>
+#include <psmpm/simulator/output_files.h>
 #include <psmpm/simulator/particle_relocation.h>
 #include <psmpm/simulator/postprocessors.h>
 #include <psmpm/simulator/reconstruction.h>
+#include <psmpm/simulator/run_record.h>
+#include <psmpm/simulator/scene_text.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
 #include <psmpm/simulator/time_step_control.h>
 #include <psmpm/simulator/transfer_scheme.h>
+#include <psmpm/simulator/transfer_setup.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace psmpm
 {
   namespace Simulator
   {
     using namespace dealii;
-
-    /// How a run ended; unstable runs carry the reason, interrupted ones
-    /// the signal (SIGINT, SIGTERM; see StopRequest).
-    enum class Status
-    {
-      completed,
-      unstable,
-      interrupted
-    };
-
-    /// "completed", "unstable" or "interrupted" (summary.json).
-    inline const char *
-    status_name(const Status s)
-    {
-      return s == Status::completed ? "completed" :
-             s == Status::unstable  ? "unstable" :
-                                      "interrupted";
-    }
 
     /// What a run will cost, estimated before it starts (RunLimits).
     struct RunSize
@@ -194,12 +184,12 @@ namespace psmpm
       const std::string &
       get_mass_matrix_name() const
       {
-        return grid_parameters.type;
+        return discretisation.grid_parameters.type;
       }
       const std::string &
       get_transfer_name() const
       {
-        return transfer_name;
+        return transfers.name;
       }
       const State<dim> &
       get_state() const
@@ -234,7 +224,7 @@ namespace psmpm
       unsigned int
       get_n_dofs() const
       {
-        return n_functions;
+        return discretisation.n_functions;
       }
 
     private:
@@ -245,8 +235,22 @@ namespace psmpm
       /// Build the triangulation (replicated or distributed).
       void
       create_mesh();
+      /// Space, DoFs, the mass matrix and transfer for this mesh, the grid
+      /// system and the boundary conditions.
       void
       setup_space_and_grid();
+      /// The boundary ids of Boundary conditions/Fixed x (and y).
+      std::array<std::set<types::boundary_id>, dim>
+      fixed_boundary_ids() const;
+      /// Whether the closed-mesh choice applies: automatic mass, and
+      /// material that fills a mesh whose boundaries are all closed in
+      /// their normal direction (@p fixed; decided over all ranks).
+      bool
+      closed_and_filled(
+        const std::array<std::set<types::boundary_id>, dim> &fixed) const;
+      void
+      create_grid_system(
+        const std::array<std::set<types::boundary_id>, dim> &fixed);
       void
       setup_particles();
       void
@@ -263,92 +267,88 @@ namespace psmpm
       /// transfer's affine matrices, the last step, the output directory.
       Postprocess::StateView<dim>
       view() const;
+
+      /// Run @p write on every rank; every rank learns of a failed write
+      /// (the first message wins) and throws ExcWriteFailed.
+      template <typename Write>
+      void
+      checked(const Write &write);
+      /// Before the first step: the initial output, or after resume() the
+      /// files as of the checkpoint; the run's header line.
+      void
+      begin_run(const std::string &directory);
+      /// Whether output is due after this step (counts the multiples of
+      /// Output/Time interval passed).
+      bool
+      output_due();
+      /// The timers and, for a run that did not complete, why.
+      void
+      report_end() const;
+
+      /// Rank 0 reads the first readable of @p files into @p archive and
+      /// checks it; every rank learns the verdict and the file's name
+      /// (returned), and throws ExcMessage naming it if none is usable.
+      std::string
+      read_checkpoint(const std::vector<std::string> &files, Archive &archive);
+      /// Particles and components from @p archive (read on rank 0).
+      void
+      restore(Archive &archive);
+      /// The archive's particles, handed to the ranks owning their cells.
+      void
+      restore_particles(const Archive &archive);
+      /// Everything but the particles, from the archive every rank has.
+      void
+      restore_components(const Archive &shared);
+      /// Throw ExcMessage if the checkpoint @p file is past Time/End time.
+      void
+      check_end_time(const std::string &file) const;
       /// After resume(): statistics.txt, the .pvd series and
       /// tracked_particle.txt as of the checkpoint; later VTU files removed.
       void
       restore_files();
+
+      /// Status, reason, steps and resume of summary.json.
+      void
+      fill_status(Summary &summary) const;
+      /// The phase timers and the throughput of the time loop.
+      void
+      fill_timings(Summary &summary) const;
 
       MPI_Comm           comm;
       ConditionalOStream pcout;
       State<dim>         state;
 
       // Scene description.
-      Mesh::MeshGenerator<dim>                     mesh_generator;
-      Particles::ParticleGenerator<dim>            particle_generator;
-      typename Solver::GridSystem<dim>::Parameters grid_parameters;
-      std::string                                  basis_name;
-      unsigned int                                 basis_degree = 2;
-      std::string                                  transfer_name;
-      /// Basis functions: the layout's DoFs minus those the space ties
-      /// to others (bspline: 2n + 1 Bezier DoFs carry n + 2 B-splines).
-      types::global_dof_index n_functions = 0;
-      /// Transfer/Reconstruction ("particles": none).
-      std::string reconstruction_name = "particles";
+      Mesh::MeshGenerator<dim>          mesh_generator;
+      Particles::ParticleGenerator<dim> particle_generator;
+      Discretisation<dim>               discretisation;
+      TransferSetup<dim>                transfers;
+      InitialConditions<dim>            initial_conditions;
+      /// Boundary conditions/Fixed x (and y): the boundaries by name.
+      std::array<std::vector<std::string>, dim> fixed_names;
+      /// Reactions, friction, prescribed velocities, boundary parts.
+      BoundaryConditions<dim> boundary_conditions;
+      /// What checkpoints of this run are compared with.
+      SceneText scene_text;
+
+      // Components.
       /// Locates the moved particles; counts the particles that changed
       /// cells on this rank since the run (or its resume) started: grid
       /// crossings, the source of MPM's grid-crossing noise (summary.json
       /// "cell_crossings").
-      ParticleRelocation<dim> relocation;
-      /// CPU seconds (user + sys, this rank) of the time loop of run().
-      double cpu_time_loop = 0;
-      /// Whether `automatic` takes partially lumped mass with
-      /// closed_transfer (nullptr: the transfer chosen already) named
-      /// closed_transfer_name if the mesh turns out closed and filled
-      /// (parse_parameters() says if the rule applies: automatic mass, a
-      /// fixed grid; setup_space_and_grid() decides).
-      bool                                      closed_rule = false;
-      std::string                               closed_transfer_name;
-      std::string                               velocity_expression;
-      std::string                               velocity_constants;
-      /// Initial conditions/Stress (applied when the particles are made).
-      InitialStress<dim> initial_stress;
-      std::array<std::vector<std::string>, dim> fixed_names;
-      /// Reactions, friction, prescribed velocities, boundary parts.
-      BoundaryConditions<dim> boundary_conditions;
-      unsigned int                              output_interval = 0;
-      unsigned int                              subdivisions    = 0;
-      /// Output/Particle format.
-      Postprocess::ParticleFormat particle_format =
-        Postprocess::ParticleFormat::vtu;
-
-      // Components.
-      Checkpoint                           checkpoint;
-      std::unique_ptr<TransferScheme<dim>> transfer;
-      std::unique_ptr<TransferScheme<dim>> closed_transfer;
-      /// Created by parse_parameters(), moved into the state by setup().
-      std::unique_ptr<Reconstruction<dim>>         reconstruction;
+      ParticleRelocation<dim>                      relocation;
+      Checkpoint                                   checkpoint;
       TimeStepControl                              time_step_control;
       StabilityMonitor                             monitor;
       std::unique_ptr<Postprocess::Reference<dim>> reference;
       /// Every registered postprocessor (energies, rotation, bodies, mass
       /// solves, error norms, tracked particle, ...).
-      Postprocessors<dim>                             postprocessors;
-      std::unique_ptr<Postprocess::OutputWriter<dim>> writer;
+      Postprocessors<dim> postprocessors;
 
       // Run record.
-      std::string                  output_directory;
-      Postprocess::StatisticsTable statistics;
-      /// statistics.txt, appended to at every output.
-      std::unique_ptr<GrowingTextFile> statistics_file;
-      PhaseTimer                       timer;
-      Status                           status           = Status::completed;
-      unsigned int                     failed_step      = 0;
-      double                           failed_time      = 0;
-      unsigned int                     total_iterations = 0;
-      /// Multiples of Output/Time interval passed.
-      unsigned int time_outputs = 0;
-      /// The times at which the reference was advanced (checkpoints).
-      std::vector<double> step_times;
-      /// The scene as ShortPRM text (checkpoints compare it).
-      std::string parameter_text;
-      /// The same for the declarations alone (the defaults).
-      std::string default_parameter_text;
-      /// The checkpoint this run resumed from ("" if none).
-      std::string  resumed_from;
-      unsigned int resumed_step = 0;
-      /// Wall time of the run before the checkpoint it resumed from.
-      double wall_offset = 0;
-      Timer  wall;
+      OutputFiles<dim> output;
+      PhaseTimer       timer;
+      RunRecord        record;
     };
 
     /// A Simulator<1> or Simulator<2> (Geometry/Dimension).

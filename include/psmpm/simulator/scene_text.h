@@ -1,0 +1,38 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_simulator_scene_text_h
+#define psmpm_simulator_scene_text_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    using namespace dealii;
+
+    /**
+     * The scene of a run as ShortPRM text: what a checkpoint of the run
+     * stores and what a resumed run compares it with
+     * (Checkpoint::parameter_differences()).
+     */
+    struct SceneText
+    {
+      /// The text of @p prm, and of the declarations alone that
+      /// @p declare makes (the defaults).
+      void
+      record(const ParameterHandler &prm, void (*declare)(ParameterHandler &));
+
+      /// The scene.
+      std::string parameters;
+      /// The declarations alone: entries added since a checkpoint was
+      /// written are accepted on resume at their defaults.
+      std::string defaults;
+    };
+  } // namespace Simulator
+} // namespace psmpm
+
+#endif
