@@ -400,6 +400,108 @@ namespace psmpm
 
 
 
+      /// One VTU data array: the opening tag with @p attributes, then the
+      /// @p n_entries x @p n_components values of component(i, c) as T
+      /// (points: n entries, cells: n_cells), compressed by @p writer.
+      template <typename T, typename Component>
+      void
+      write_data_array(std::ostream          &out,
+                       CompressedArrayWriter &writer,
+                       const std::string     &attributes,
+                       const std::size_t      n_entries,
+                       const unsigned int     n_components,
+                       const Component       &component)
+      {
+        out << "    <DataArray " << attributes << " format=\"binary\">\n";
+        writer.begin(out, n_entries * n_components * sizeof(T));
+        for (std::size_t i = 0; i < n_entries; ++i)
+          for (unsigned int c = 0; c < n_components; ++c)
+            writer.push(static_cast<T>(component(i, c)));
+        writer.end();
+        out << "\n    </DataArray>\n";
+      }
+
+      /// The output components of one vector or tensor @p range at the
+      /// VTK positions (3 for a vector, 3 x 3 row by row for a tensor):
+      /// source[c] is the component at position c, or invalid (written
+      /// as 0); marks them in @p written.
+      std::array<unsigned int, 9>
+      vtk_sources(const Ranges::value_type &range,
+                  const bool                is_tensor,
+                  std::vector<bool>        &written)
+      {
+        const unsigned int          first = std::get<0>(range);
+        const unsigned int          last  = std::get<1>(range);
+        std::array<unsigned int, 9> source;
+        source.fill(numbers::invalid_unsigned_int);
+        const unsigned int size = last - first + 1;
+        AssertThrow(is_tensor ? (size == 1 || size == 4) : size <= 3,
+                    ExcInternalError());
+        for (unsigned int c = 0; c < size; ++c)
+          {
+            written[first + c] = true;
+            if (!is_tensor)
+              source[c] = first + c;
+            else if (size == 1)
+              source[0] = first;
+            else
+              {
+                const auto ind = Tensor<2, 2>::unrolled_to_component_indices(c);
+                source[3 * ind[0] + ind[1]] = first + c;
+              }
+          }
+        return source;
+      }
+
+      /// The point data of write_cells_vtu(): as deal.II, the vectors and
+      /// tensors of @p ranges, then the other scalars of @p names.
+      template <typename Value>
+      void
+      write_point_data(std::ostream                   &out,
+                       CompressedArrayWriter          &writer,
+                       const std::size_t               n,
+                       const std::vector<std::string> &names,
+                       const Ranges                   &ranges,
+                       const Value                    &value)
+      {
+        out << "  <PointData Scalars=\"scalars\">\n";
+        std::vector<bool> written(names.size(), false);
+        for (const auto &range : ranges)
+          {
+            const bool is_tensor =
+              std::get<3>(range) ==
+              DataComponentInterpretation::component_is_part_of_tensor;
+            const std::array<unsigned int, 9> source =
+              vtk_sources(range, is_tensor, written);
+            const std::string &name = std::get<2>(range);
+            AssertThrow(!name.empty(), ExcInternalError());
+            write_data_array<float>(
+              out,
+              writer,
+              "type=\"Float32\" Name=\"" + name + "\" NumberOfComponents=\"" +
+                std::to_string(is_tensor ? 9 : 3) + "\"",
+              n,
+              is_tensor ? 9 : 3,
+              [&](const std::size_t i, const unsigned int c) {
+                return source[c] == numbers::invalid_unsigned_int ?
+                         0. :
+                         value(i, source[c]);
+              });
+          }
+        for (unsigned int k = 0; k < names.size(); ++k)
+          if (!written[k])
+            write_data_array<float>(out,
+                                    writer,
+                                    "type=\"Float32\" Name=\"" + names[k] +
+                                      "\"",
+                                    n,
+                                    1,
+                                    [&](const std::size_t i, unsigned int) {
+                                      return value(i, k);
+                                    });
+        out << "  </PointData>\n";
+      }
+
       /**
        * The VTU piece of @p n_cells cells of @p vertices_per_cell points
        * each (VTK cell type @p vtk_type; points not shared, cell i is the
@@ -432,113 +534,48 @@ namespace psmpm
                                "(Int32 connectivity)."));
         const DataOutBase::VtkFlags flags = vtk_flags();
         CompressedArrayWriter       writer(Z_BEST_SPEED); // as best_speed
-        // One array: the opening tag with @p attributes, then the
-        // n_entries x n_components values of component(i, c) as T (points:
-        // n entries, cells: n_cells).
-        const auto array = [&](const std::string &attributes,
-                               const std::size_t  n_entries,
-                               const unsigned int n_components,
-                               const auto         component,
-                               const auto         as_type) {
-          using T = decltype(as_type);
-          out << "    <DataArray " << attributes << " format=\"binary\">\n";
-          writer.begin(out, n_entries * n_components * sizeof(T));
-          for (std::size_t i = 0; i < n_entries; ++i)
-            for (unsigned int c = 0; c < n_components; ++c)
-              writer.push(static_cast<T>(component(i, c)));
-          writer.end();
-          out << "\n    </DataArray>\n";
-        };
 
         DataOutBase::write_vtu_header(out, flags);
         out << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\""
             << n_cells << "\" >\n";
         out << "  <Points>\n";
-        array(
-          "type=\"Float32\" NumberOfComponents=\"3\"",
-          n,
-          3,
-          [&](const std::size_t i, const unsigned int c) {
-            return c < dim ? position(i)[c] : 0.;
-          },
-          float());
+        write_data_array<float>(out,
+                                writer,
+                                "type=\"Float32\" NumberOfComponents=\"3\"",
+                                n,
+                                3,
+                                [&](const std::size_t i, const unsigned int c) {
+                                  return c < dim ? position(i)[c] : 0.;
+                                });
         out << "  </Points>\n\n";
         out << "  <Cells>\n";
-        array(
-          "type=\"Int32\" Name=\"connectivity\"",
-          n,
-          1,
-          [](const std::size_t i, unsigned int) { return i; },
-          std::int32_t());
-        array(
-          "type=\"Int32\" Name=\"offsets\"",
-          n_cells,
-          1,
-          [vertices_per_cell](const std::size_t i, unsigned int) {
-            return (i + 1) * vertices_per_cell;
-          },
-          std::int32_t());
-        array(
-          "type=\"UInt8\" Name=\"types\"",
-          n_cells,
-          1,
-          [vtk_type](std::size_t, unsigned int) { return vtk_type; },
-          std::uint8_t());
+        write_data_array<std::int32_t>(out,
+                                       writer,
+                                       "type=\"Int32\" Name=\"connectivity\"",
+                                       n,
+                                       1,
+                                       [](const std::size_t i, unsigned int) {
+                                         return i;
+                                       });
+        write_data_array<std::int32_t>(out,
+                                       writer,
+                                       "type=\"Int32\" Name=\"offsets\"",
+                                       n_cells,
+                                       1,
+                                       [vertices_per_cell](const std::size_t i,
+                                                           unsigned int) {
+                                         return (i + 1) * vertices_per_cell;
+                                       });
+        write_data_array<std::uint8_t>(out,
+                                       writer,
+                                       "type=\"UInt8\" Name=\"types\"",
+                                       n_cells,
+                                       1,
+                                       [vtk_type](std::size_t, unsigned int) {
+                                         return vtk_type;
+                                       });
         out << "  </Cells>\n";
-
-        // As deal.II: the vectors and tensors, then the other scalars.
-        out << "  <PointData Scalars=\"scalars\">\n";
-        std::vector<bool> written(names.size(), false);
-        for (const auto &range : ranges)
-          {
-            const unsigned int first = std::get<0>(range);
-            const unsigned int last  = std::get<1>(range);
-            const bool         is_tensor =
-              std::get<3>(range) ==
-              DataComponentInterpretation::component_is_part_of_tensor;
-            // source[c]: the component at VTK position c, or none (0).
-            std::array<unsigned int, 9> source;
-            source.fill(numbers::invalid_unsigned_int);
-            const unsigned int size = last - first + 1;
-            AssertThrow(is_tensor ? (size == 1 || size == 4) : size <= 3,
-                        ExcInternalError());
-            for (unsigned int c = 0; c < size; ++c)
-              {
-                written[first + c] = true;
-                if (!is_tensor)
-                  source[c] = first + c;
-                else if (size == 1)
-                  source[0] = first;
-                else
-                  {
-                    const auto ind =
-                      Tensor<2, 2>::unrolled_to_component_indices(c);
-                    source[3 * ind[0] + ind[1]] = first + c;
-                  }
-              }
-            const std::string &name = std::get<2>(range);
-            AssertThrow(!name.empty(), ExcInternalError());
-            array(
-              "type=\"Float32\" Name=\"" + name + "\" NumberOfComponents=\"" +
-                std::to_string(is_tensor ? 9 : 3) + "\"",
-              n,
-              is_tensor ? 9 : 3,
-              [&](const std::size_t i, const unsigned int c) {
-                return source[c] == numbers::invalid_unsigned_int ?
-                         0. :
-                         value(i, source[c]);
-              },
-              float());
-          }
-        for (unsigned int k = 0; k < names.size(); ++k)
-          if (!written[k])
-            array(
-              "type=\"Float32\" Name=\"" + names[k] + "\"",
-              n,
-              1,
-              [&](const std::size_t i, unsigned int) { return value(i, k); },
-              float());
-        out << "  </PointData>\n";
+        write_point_data(out, writer, n, names, ranges, value);
         out << " </Piece>\n";
         DataOutBase::write_vtu_footer(out);
         out << std::flush;
@@ -684,6 +721,334 @@ namespace psmpm
               source.push_back(k);
             }
       }
+
+      /**
+       * The particle output's components and their values: id, cell,
+       * rank, mass, volume, density (body_id and material_id with
+       * Bodies), displacement, velocity, the stress and the material
+       * state. The constructor fills the names and ranges of the
+       * components; operator()(i, k) is component k of particle i, in the
+       * order of names. VTU stores Float32: ids above 2^24 lose their
+       * last digits, which is acceptable for picking particles in
+       * ParaView.
+       */
+      template <int dim>
+      class ParticleValues
+      {
+      public:
+        ParticleValues(const Particles::ParticleSet<dim> &particles,
+                       const double                       rank,
+                       std::vector<std::string>          &names,
+                       Ranges                            &ranges)
+          : particles(particles)
+          , rank(rank)
+        {
+          names = {"id", "cell", "rank", "mass", "volume", "density"};
+          // Scenes without Bodies keep their fields (every particle is in
+          // body 0).
+          if (particles.n_bodies > 0)
+            {
+              names.push_back("body_id");
+              names.push_back("material_id");
+            }
+          first_displacement = names.size();
+          add_vector<dim>("displacement", names, ranges);
+          first_velocity = names.size();
+          add_vector<dim>("velocity", names, ranges);
+
+          // The full dim x dim tensor in deal.II's unrolled order, so that
+          // ParaView shows the symmetric stress as a tensor (eigenvalues,
+          // von Mises through the calculator) rather than loose
+          // components.
+          first_stress = names.size();
+          for (unsigned int c = 0; c < dim * dim; ++c)
+            {
+              stress_index[c] =
+                Tensor<2, dim>::unrolled_to_component_indices(c);
+              names.push_back(std::string("stress_") +
+                              component_suffix[stress_index[c][0]] +
+                              component_suffix[stress_index[c][1]]);
+            }
+          ranges.emplace_back(
+            first_stress,
+            first_stress + dim * dim - 1,
+            "stress",
+            DataComponentInterpretation::component_is_part_of_tensor);
+
+          // Material state: scalars named <p>_xx, <p>_xy, ... form a
+          // tensor (a symmetric one if <p>_yx is missing), written as
+          // such; the rest are scalars.
+          first_state = names.size();
+          state_layout<dim>(particles.get_state_names(), names, ranges, source);
+        }
+
+        double
+        operator()(const std::size_t i, const unsigned int k) const
+        {
+          if (k >= first_state)
+            return particles.state_of(i)[source[k - first_state]];
+          if (k >= first_stress)
+            {
+              const TableIndices<2> &ind = stress_index[k - first_stress];
+              return particles.stress[i][ind[0]][ind[1]];
+            }
+          if (k >= first_velocity)
+            return particles.velocity[i][k - first_velocity];
+          if (k >= first_displacement)
+            return particles.displacement[i][k - first_displacement];
+          switch (k)
+            {
+              case 0:
+                return static_cast<double>(particles.id[i]);
+              case 1:
+                return particles.cell[i];
+              case 2:
+                return rank;
+              case 3:
+                return particles.mass[i];
+              case 4:
+                return particles.volume[i];
+              case 5:
+                return particles.density[i];
+              case 6:
+                return particles.body_id[i];
+              default:
+                return particles.body_material[particles.body_id[i]];
+            }
+        }
+
+      private:
+        const Particles::ParticleSet<dim> &particles;
+        const double                       rank;
+        unsigned int first_displacement, first_velocity, first_stress,
+          first_state;
+        /// The state index of output component first_state + k.
+        std::vector<unsigned int>              source;
+        std::array<TableIndices<2>, dim * dim> stress_index;
+      };
+
+      template <int dim>
+      using VectorFields = std::vector<
+        std::pair<std::string, const std::vector<Tensor<1, dim>> *>>;
+      using ScalarFields =
+        std::vector<std::pair<std::string, const std::vector<double> *>>;
+
+      /**
+       * The grid output sampled cell by cell: the field values at the
+       * sampling points of each cell (lattice_points()), collected as one
+       * patch per cell in 1D and on rectangles (Mesh/Type = cartesian),
+       * and on triangles as the drawn lattice points and their values,
+       * cell after cell, written without patches (write_cells_vtu()).
+       * Components of a point: on a moved grid how far it moved (ParaView
+       * can colour by it; the points are already at the moved positions),
+       * the vector fields, the scalar fields and the rank (a cell field;
+       * VTU patches only carry point data, so it is constant on the
+       * cell's unshared points, which ParaView shows as cells).
+       */
+      template <int dim>
+      class GridSampler
+      {
+      public:
+        GridSampler(const Basis::Space<dim>         &space,
+                    const std::vector<unsigned int> &cell_dofs,
+                    const VectorFields<dim>         &vector_fields,
+                    const ScalarFields              &scalar_fields,
+                    const std::vector<Point<dim>>   *moved_vertices,
+                    const unsigned int               subdivisions,
+                    const double                     rank)
+          : space(space)
+          , n(space.dofs_per_cell())
+          , cell_dofs(cell_dofs)
+          , vector_fields(vector_fields)
+          , scalar_fields(scalar_fields)
+          , moved_vertices(moved_vertices)
+          , s(subdivisions)
+          , rank(rank)
+        {
+        }
+
+        /// The component names and ranges of the output.
+        void
+        layout(std::vector<std::string> &names, Ranges &ranges)
+        {
+          if (moved_vertices)
+            add_vector<dim>("grid_displacement", names, ranges);
+          for (const auto &f : vector_fields)
+            add_vector<dim>(f.first, names, ranges);
+          for (const auto &f : scalar_fields)
+            names.push_back(f.first);
+          names.push_back("rank");
+          n_names = names.size();
+        }
+
+        /// Sample the owned @p cell and add it to the output.
+        void
+        add_cell(const typename DoFHandler<dim>::active_cell_iterator &cell)
+        {
+          // Rectangles are drawn as one quadrilateral patch each,
+          // triangles as s^2 triangles.
+          const bool quad = dim == 2 && cell->reference_cell() ==
+                                          ReferenceCells::get_hypercube<dim>();
+          const unsigned int              c = cell->active_cell_index();
+          std::array<Point<dim>, dim + 1> v;
+          for (unsigned int i = 0; i <= dim; ++i)
+            v[i] = cell->vertex(i);
+          std::vector<Point<dim>> points;
+          if constexpr (dim == 2)
+            points =
+              quad ? box_lattice_points(v, s) : lattice_points<dim>(v, s);
+          else
+            points = lattice_points<dim>(v, s);
+          // On a moved grid the cell is affinely mapped: the lattice
+          // point of the same barycentric coordinates carries the same
+          // values, drawn at its moved position.
+          std::array<Point<dim>, dim + 1> w = v;
+          if (moved_vertices)
+            for (unsigned int i = 0; i <= dim; ++i)
+              w[i] = (*moved_vertices)[cell_dofs[c * n + i]];
+          const std::vector<Point<dim>> drawn =
+            moved_vertices ? lattice_points<dim>(w, s) : points;
+          evaluate(c, points, drawn);
+
+          if constexpr (dim == 1)
+            // deal.II subdivides line patches itself: s + 1 points.
+            add_patch(w.data(), 2, points.size());
+          else if (quad)
+            {
+              std::array<Point<dim>, 4> corners;
+              for (unsigned int i = 0; i < cell->n_vertices(); ++i)
+                corners[i] = cell->vertex(i);
+              add_patch(corners.data(), cell->n_vertices(), points.size());
+            }
+          else
+            {
+              // Drawn as s^2 triangles of three unshared points each, as
+              // deal.II 9.4 writes one simplex patch per sub-triangle (it
+              // has no simplex patches with n_subdivisions > 1).
+              lattice_drawn.insert(lattice_drawn.end(),
+                                   drawn.begin(),
+                                   drawn.end());
+              lattice_data.insert(lattice_data.end(), data.begin(), data.end());
+              ++n_triangle_cells;
+            }
+        }
+
+        /// The piece of the triangles (2D).
+        void
+        write_triangles(std::ostream                   &out,
+                        const std::vector<std::string> &names,
+                        const Ranges                   &ranges) const
+        {
+          // Point j: corner j % 3 of sub-triangle (j / 3) % T of the
+          // (j / 3T)-th cell, i.e. one of the cell's L lattice points.
+          const std::vector<std::array<unsigned int, 3>> triangles =
+            sub_triangles(s);
+          const std::size_t T     = triangles.size();
+          const std::size_t L     = (s + 1) * (s + 2) / 2;
+          const auto        point = [&](const std::size_t j) {
+            const std::size_t cell = j / (3 * T);
+            const std::size_t r    = j % (3 * T);
+            return cell * L + triangles[r / 3][r % 3];
+          };
+          write_cells_vtu<dim>(
+            out,
+            n_triangle_cells * T,
+            3,
+            5, // VTK_TRIANGLE
+            names,
+            ranges,
+            [&](const std::size_t j) -> const Point<dim> & {
+              return lattice_drawn[point(j)];
+            },
+            [&](const std::size_t j, const unsigned int k) {
+              return lattice_data[point(j) * n_names + k];
+            });
+        }
+
+        std::vector<DataOutBase::Patch<dim, dim>> patches;
+        std::size_t                               n_triangle_cells = 0;
+
+      private:
+        /// The field values at the sampling @p points of cell @p c (drawn
+        /// at @p drawn) into data, point-major, with one batched
+        /// (virtual) evaluation.
+        void
+        evaluate(const unsigned int             c,
+                 const std::vector<Point<dim>> &points,
+                 const std::vector<Point<dim>> &drawn)
+        {
+          const unsigned int n_points = points.size();
+          cells.assign(n_points, c);
+          values.resize(n_points * n);
+          space.evaluate(n_points,
+                         cells.data(),
+                         points.data(),
+                         values.data(),
+                         nullptr);
+          data.assign(n_points * n_names, 0.);
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              const double *phi = values.data() + q * n;
+              double       *row = data.data() + q * n_names;
+              if (moved_vertices)
+                for (unsigned int d = 0; d < dim; ++d)
+                  *row++ = drawn[q][d] - points[q][d];
+              for (const auto &f : vector_fields)
+                {
+                  Tensor<1, dim> u;
+                  for (unsigned int k = 0; k < n; ++k)
+                    u += phi[k] * (*f.second)[cell_dofs[c * n + k]];
+                  for (unsigned int d = 0; d < dim; ++d)
+                    *row++ = u[d];
+                }
+              for (const auto &f : scalar_fields)
+                {
+                  double u = 0;
+                  for (unsigned int k = 0; k < n; ++k)
+                    u += phi[k] * (*f.second)[cell_dofs[c * n + k]];
+                  *row++ = u;
+                }
+              *row = rank;
+            }
+        }
+
+        /// A patch of the @p n_vertices @p vertices (a line or a
+        /// rectangle) with n_subdivisions = s and the values of data.
+        void
+        add_patch(const Point<dim>  *vertices,
+                  const unsigned int n_vertices,
+                  const unsigned int n_points)
+        {
+          DataOutBase::Patch<dim, dim> patch;
+          patch.reference_cell = ReferenceCells::get_hypercube<dim>();
+          patch.n_subdivisions = s;
+          patch.patch_index    = patches.size();
+          for (unsigned int i = 0; i < n_vertices; ++i)
+            patch.vertices[i] = vertices[i];
+          patch.data.reinit(n_names, n_points);
+          for (unsigned int q = 0; q < n_points; ++q)
+            for (unsigned int r = 0; r < n_names; ++r)
+              patch.data(r, q) = data[q * n_names + r];
+          patches.push_back(std::move(patch));
+        }
+
+        const Basis::Space<dim>         &space;
+        const unsigned int               n;
+        const std::vector<unsigned int> &cell_dofs;
+        const VectorFields<dim>         &vector_fields;
+        const ScalarFields              &scalar_fields;
+        const std::vector<Point<dim>>   *moved_vertices;
+        const unsigned int               s;
+        const double                     rank;
+        unsigned int                     n_names = 0;
+
+        std::vector<Point<dim>>   lattice_drawn;
+        std::vector<double>       lattice_data;
+        std::vector<double>       values;
+        std::vector<unsigned int> cells;
+        /// Field values at the lattice points of one cell, point-major.
+        std::vector<double> data;
+      };
     } // namespace
 
 
@@ -773,85 +1138,12 @@ namespace psmpm
       const double                       time,
       const Particles::ParticleSet<dim> &particles)
     {
-      std::vector<std::string> names =
-        {"id", "cell", "rank", "mass", "volume", "density"};
-      // Scenes without Bodies keep their fields (every particle is in
-      // body 0).
-      const bool with_bodies = particles.n_bodies > 0;
-      if (with_bodies)
-        {
-          names.push_back("body_id");
-          names.push_back("material_id");
-        }
-      Ranges             ranges;
-      const unsigned int first_displacement = names.size();
-      add_vector<dim>("displacement", names, ranges);
-      const unsigned int first_velocity = names.size();
-      add_vector<dim>("velocity", names, ranges);
-
-      // The full dim x dim tensor in deal.II's unrolled order, so that
-      // ParaView shows the symmetric stress as a tensor (eigenvalues,
-      // von Mises through the calculator) rather than loose components.
-      const unsigned int first_stress = names.size();
-      for (unsigned int c = 0; c < dim * dim; ++c)
-        {
-          const auto ind = Tensor<2, dim>::unrolled_to_component_indices(c);
-          names.push_back(std::string("stress_") + component_suffix[ind[0]] +
-                          component_suffix[ind[1]]);
-        }
-      ranges.emplace_back(
-        first_stress,
-        first_stress + dim * dim - 1,
-        "stress",
-        DataComponentInterpretation::component_is_part_of_tensor);
-
-      // Material state: scalars named <p>_xx, <p>_xy, ... form a tensor
-      // (a symmetric one if <p>_yx is missing), written as such; the rest
-      // are scalars. source[k]: the state index of output component k.
-      const unsigned int        first_state = names.size();
-      std::vector<unsigned int> source;
-      state_layout<dim>(particles.get_state_names(), names, ranges, source);
-      const double rank = Utilities::MPI::this_mpi_process(comm);
-      std::array<TableIndices<2>, dim * dim> stress_index;
-      for (unsigned int c = 0; c < dim * dim; ++c)
-        stress_index[c] = Tensor<2, dim>::unrolled_to_component_indices(c);
-      // Output component k of particle i, in the order of names. VTU
-      // stores Float32: ids above 2^24 lose their last digits, which is
-      // acceptable for picking particles in ParaView.
-      const auto value = [&](const std::size_t  i,
-                             const unsigned int k) -> double {
-        if (k >= first_state)
-          return particles.state_of(i)[source[k - first_state]];
-        if (k >= first_stress)
-          {
-            const TableIndices<2> &ind = stress_index[k - first_stress];
-            return particles.stress[i][ind[0]][ind[1]];
-          }
-        if (k >= first_velocity)
-          return particles.velocity[i][k - first_velocity];
-        if (k >= first_displacement)
-          return particles.displacement[i][k - first_displacement];
-        switch (k)
-          {
-            case 0:
-              return static_cast<double>(particles.id[i]);
-            case 1:
-              return particles.cell[i];
-            case 2:
-              return rank;
-            case 3:
-              return particles.mass[i];
-            case 4:
-              return particles.volume[i];
-            case 5:
-              return particles.density[i];
-            case 6:
-              return particles.body_id[i];
-            default:
-              return particles.body_material[particles.body_id[i]];
-          }
-      };
-
+      std::vector<std::string>  names;
+      Ranges                    ranges;
+      const ParticleValues<dim> value(particles,
+                                      Utilities::MPI::this_mpi_process(comm),
+                                      names,
+                                      ranges);
       if constexpr (dim >= 2)
         if (hdf5)
           {
@@ -912,199 +1204,46 @@ namespace psmpm
                                     &scalar_fields,
       const std::vector<Point<dim>> *moved_vertices)
     {
-      const unsigned int n = space.dofs_per_cell();
-      AssertThrow(moved_vertices == nullptr || n == dim + 1,
+      AssertThrow(moved_vertices == nullptr || space.dofs_per_cell() == dim + 1,
                   ExcMessage("psmpm: a moved grid is drawn for P1 (one "
                              "function per vertex) only."));
       std::vector<std::string> names;
       Ranges                   ranges;
-      // A moved grid also shows how far it moved (ParaView can colour by
-      // it; the points are already at the moved positions).
-      if (moved_vertices)
-        add_vector<dim>("grid_displacement", names, ranges);
-      for (const auto &f : vector_fields)
-        add_vector<dim>(f.first, names, ranges);
-      for (const auto &f : scalar_fields)
-        names.push_back(f.first);
-      // A cell field; VTU patches only carry point data, so it is constant
-      // on the cell's (unshared) points, which ParaView shows as cells.
-      names.push_back("rank");
-      const double rank = Utilities::MPI::this_mpi_process(comm);
-
-      const unsigned int                             s = subdivisions;
-      const std::vector<std::array<unsigned int, 3>> triangles =
-        (dim == 2 ? sub_triangles(s) :
-                    std::vector<std::array<unsigned int, 3>>());
-
-      std::vector<DataOutBase::Patch<dim, dim>> patches;
-      // Triangles are written without patches (write_cells_vtu()): the
-      // drawn lattice points and their field values, cell after cell.
-      std::vector<Point<dim>>   lattice_drawn;
-      std::vector<double>       lattice_data;
-      std::size_t               n_triangle_cells = 0;
-      std::vector<double>       values;
-      std::vector<unsigned int> cells;
-      // Field values at the lattice points of one cell, point-major.
-      std::vector<double> data;
+      GridSampler<dim>         sampler(space,
+                               cell_dofs,
+                               vector_fields,
+                               scalar_fields,
+                               moved_vertices,
+                               subdivisions,
+                               Utilities::MPI::this_mpi_process(comm));
+      sampler.layout(names, ranges);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
-          {
-            // Rectangles (Mesh/Type = cartesian) are drawn as one
-            // quadrilateral patch each, triangles as s^2 triangles.
-            const bool quad =
-              dim == 2 &&
-              cell->reference_cell() == ReferenceCells::get_hypercube<dim>();
-            const unsigned int              c = cell->active_cell_index();
-            std::array<Point<dim>, dim + 1> v;
-            for (unsigned int i = 0; i <= dim; ++i)
-              v[i] = cell->vertex(i);
-            std::vector<Point<dim>> points;
-            if constexpr (dim == 2)
-              points =
-                quad ? box_lattice_points(v, s) : lattice_points<dim>(v, s);
-            else
-              points = lattice_points<dim>(v, s);
-            const unsigned int n_points = points.size();
-            // On a moved grid the cell is affinely mapped: the lattice
-            // point of the same barycentric coordinates carries the same
-            // values, drawn at its moved position.
-            std::array<Point<dim>, dim + 1> w = v;
-            if (moved_vertices)
-              for (unsigned int i = 0; i <= dim; ++i)
-                w[i] = (*moved_vertices)[cell_dofs[c * n + i]];
-            const std::vector<Point<dim>> drawn =
-              moved_vertices ? lattice_points<dim>(w, s) : points;
-
-            // One batched (virtual) evaluation per cell.
-            cells.assign(n_points, c);
-            values.resize(n_points * n);
-            space.evaluate(n_points,
-                           cells.data(),
-                           points.data(),
-                           values.data(),
-                           nullptr);
-
-            data.assign(n_points * names.size(), 0.);
-            for (unsigned int q = 0; q < n_points; ++q)
-              {
-                const double *phi = values.data() + q * n;
-                double       *row = data.data() + q * names.size();
-                if (moved_vertices)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    *row++ = drawn[q][d] - points[q][d];
-                for (const auto &f : vector_fields)
-                  {
-                    Tensor<1, dim> u;
-                    for (unsigned int k = 0; k < n; ++k)
-                      u += phi[k] * (*f.second)[cell_dofs[c * n + k]];
-                    for (unsigned int d = 0; d < dim; ++d)
-                      *row++ = u[d];
-                  }
-                for (const auto &f : scalar_fields)
-                  {
-                    double u = 0;
-                    for (unsigned int k = 0; k < n; ++k)
-                      u += phi[k] * (*f.second)[cell_dofs[c * n + k]];
-                    *row++ = u;
-                  }
-                *row = rank;
-              }
-
-            const auto fill = [&](DataOutBase::Patch<dim, dim> &patch,
-                                  const unsigned int            column,
-                                  const unsigned int            q) {
-              for (unsigned int r = 0; r < names.size(); ++r)
-                patch.data(r, column) = data[q * names.size() + r];
-            };
-
-            if constexpr (dim == 1)
-              {
-                // deal.II subdivides line patches itself: s + 1 points.
-                DataOutBase::Patch<dim, dim> patch;
-                patch.reference_cell = ReferenceCells::get_hypercube<dim>();
-                patch.n_subdivisions = s;
-                patch.patch_index    = patches.size();
-                patch.vertices[0]    = w[0];
-                patch.vertices[1]    = w[1];
-                patch.data.reinit(names.size(), n_points);
-                for (unsigned int q = 0; q < n_points; ++q)
-                  fill(patch, q, q);
-                patches.push_back(std::move(patch));
-              }
-            else if (quad)
-              {
-                DataOutBase::Patch<dim, dim> patch;
-                patch.reference_cell = ReferenceCells::get_hypercube<dim>();
-                patch.n_subdivisions = s;
-                patch.patch_index    = patches.size();
-                for (unsigned int i = 0; i < cell->n_vertices(); ++i)
-                  patch.vertices[i] = cell->vertex(i);
-                patch.data.reinit(names.size(), n_points);
-                for (unsigned int q = 0; q < n_points; ++q)
-                  fill(patch, q, q);
-                patches.push_back(std::move(patch));
-              }
-            else
-              {
-                // Drawn as s^2 triangles of three unshared points each, as
-                // deal.II 9.4 writes one simplex patch per sub-triangle
-                // (it has no simplex patches with n_subdivisions > 1).
-                lattice_drawn.insert(lattice_drawn.end(),
-                                     drawn.begin(),
-                                     drawn.end());
-                lattice_data.insert(lattice_data.end(),
-                                    data.begin(),
-                                    data.end());
-                ++n_triangle_cells;
-              }
-          }
-      AssertThrow(patches.empty() || n_triangle_cells == 0,
+          sampler.add_cell(cell);
+      AssertThrow(sampler.patches.empty() || sampler.n_triangle_cells == 0,
                   ExcMessage("psmpm: grid output of a mesh with both "
                              "triangles and rectangles is not supported."));
 
-      grid_records.emplace_back(
-        time,
-        write_pieces(
-          directory,
-          "grid",
-          step,
-          names,
-          ranges,
-          [&](std::ostream &out) {
-            if (dim != 2 || !patches.empty())
-              {
-                DataOutBase::write_vtu(patches,
-                                       names,
-                                       ranges,
-                                       vtk_flags(),
-                                       out);
-                return;
-              }
-            // Point j: corner j % 3 of sub-triangle (j / 3) % T of the
-            // (j / 3T)-th cell, i.e. one of the cell's L lattice points.
-            const std::size_t T      = triangles.size();
-            const std::size_t L      = (s + 1) * (s + 2) / 2;
-            const std::size_t n_data = names.size();
-            const auto        point  = [&](const std::size_t j) {
-              const std::size_t cell = j / (3 * T);
-              const std::size_t r    = j % (3 * T);
-              return cell * L + triangles[r / 3][r % 3];
-            };
-            write_cells_vtu<dim>(
-              out,
-              n_triangle_cells * T,
-              3,
-              5, // VTK_TRIANGLE
-              names,
-              ranges,
-              [&](const std::size_t j) -> const Point<dim> & {
-                return lattice_drawn[point(j)];
-              },
-              [&](const std::size_t j, const unsigned int k) {
-                return lattice_data[point(j) * n_data + k];
-              });
-          },
-          comm));
+      grid_records.emplace_back(time,
+                                write_pieces(
+                                  directory,
+                                  "grid",
+                                  step,
+                                  names,
+                                  ranges,
+                                  [&](std::ostream &out) {
+                                    if (dim != 2 || !sampler.patches.empty())
+                                      DataOutBase::write_vtu(sampler.patches,
+                                                             names,
+                                                             ranges,
+                                                             vtk_flags(),
+                                                             out);
+                                    else
+                                      sampler.write_triangles(out,
+                                                              names,
+                                                              ranges);
+                                  },
+                                  comm));
       write_pvd("grid", grid_records);
     }
 

@@ -147,9 +147,16 @@ namespace psmpm
                              prm_value(local_damping) +
                              ": must be below 1 (1 would cancel every "
                              "force that drives a motion)."));
+      parse_friction(prm.get("Friction coefficient"));
+      parse_prescribed(prm.get("Prescribed velocity"));
+      parse_parts(prm.get("Boundary parts"));
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::parse_friction(const std::string &friction_text)
+    {
       friction.clear();
-      const std::string friction_text = prm.get("Friction coefficient");
       for (const auto &item : split_outside_parentheses(friction_text, ','))
         {
           const auto [name, value] =
@@ -175,9 +182,14 @@ namespace psmpm
                   ExcMessage("Boundary conditions/Friction coefficient = " +
                              friction_text +
                              ": friction needs Geometry/Dimension = 2."));
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::parse_prescribed(
+      const std::string &prescribed_text)
+    {
       prescribed.clear();
-      const std::string prescribed_text = prm.get("Prescribed velocity");
       for (const auto &item : split_outside_parentheses(prescribed_text, ','))
         {
           const auto [name, value] =
@@ -219,9 +231,13 @@ namespace psmpm
                                    "' is given twice."));
           prescribed.push_back(std::move(p));
         }
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::parse_parts(const std::string &parts_text)
+    {
       parts.clear();
-      const std::string parts_text = prm.get("Boundary parts");
       for (const auto &item : split_outside_parentheses(parts_text, ';'))
         {
           const auto [name, value] = name_and_value(item, "Boundary parts");
@@ -374,7 +390,22 @@ namespace psmpm
                              "not implemented); this run has " +
                              grid.parameters.type + "."));
 
-      // The boundaries per component in the order of attribution.
+      assign_columns(state, attribution_order(fixed_names), mesh);
+      wall_of.assign(grid.relevant_global_indices().size(), invalid);
+      if constexpr (dim == 2)
+        for (const auto &f : friction)
+          if (!f.no_slip)
+            add_friction_wall(state, f, fixed_names, mesh);
+      collect_entries(state);
+      collect_prescribed_dofs();
+      allocate_results(state);
+    }
+
+    template <int dim>
+    std::array<std::vector<std::string>, dim>
+    BoundaryConditions<dim>::attribution_order(
+      const std::array<std::vector<std::string>, dim> &fixed_names) const
+    {
       std::array<std::vector<std::string>, dim> order;
       const auto add = [&](const unsigned int d, const std::string &name) {
         if (std::find(order[d].begin(), order[d].end(), name) == order[d].end())
@@ -391,7 +422,17 @@ namespace psmpm
         if (f.no_slip)
           for (unsigned int d = 0; d < dim; ++d)
             add(d, f.name);
+      return order;
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::assign_columns(
+      const State<dim>                                &state,
+      const std::array<std::vector<std::string>, dim> &order,
+      const Mesh::MeshGenerator<dim>                  &mesh)
+    {
+      const auto        &grid     = *state.grid;
       const auto        &relevant = grid.relevant_global_indices();
       const unsigned int n_dofs   = relevant.size();
       const auto        &space    = grid.get_space();
@@ -425,66 +466,68 @@ namespace psmpm
                 }
             }
         }
+    }
 
-      // Frictional walls: their normal DoFs whose tangential component is
-      // free, with the outward sign of the normal from the faces.
-      wall_of.assign(n_dofs, invalid);
-      if constexpr (dim == 2)
-        for (const auto &f : friction)
+    template <int dim>
+    void
+    BoundaryConditions<dim>::add_friction_wall(
+      const State<dim>                                &state,
+      const Friction                                  &f,
+      const std::array<std::vector<std::string>, dim> &fixed_names,
+      const Mesh::MeshGenerator<dim>                  &mesh)
+    {
+      const auto  &grid   = *state.grid;
+      const auto   id     = mesh.boundary_id(f.name);
+      unsigned int normal = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (std::find(fixed_names[d].begin(), fixed_names[d].end(), f.name) !=
+            fixed_names[d].end())
+          normal = d;
+      const unsigned int tangential = 1 - normal;
+      double             outward    = 0;
+      for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+        for (const auto face_no : cell->face_indices())
+          if (cell->face(face_no)->at_boundary() &&
+              cell->face(face_no)->boundary_id() == id)
+            {
+              const auto face = cell->face(face_no);
+              const auto t    = face->vertex(1) - face->vertex(0);
+              AssertThrow(std::abs(t[normal]) <= 1e-10 * t.norm(),
+                          ExcMessage(
+                            "Boundary conditions/Friction coefficient: "
+                            "boundary '" +
+                            f.name + "' has its " + component_names[normal] +
+                            " velocity fixed but is not perpendicular "
+                            "to " +
+                            component_names[normal] +
+                            " (friction needs axis-aligned walls)."));
+              outward += face->center()[normal] - cell->center()[normal];
+            }
+      const unsigned int column = columns.size();
+      columns.push_back({f.name, tangential});
+      column_prescribed.push_back(false);
+      unsigned int normal_column = invalid;
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        if (columns[c].name == f.name && columns[c].component == normal)
+          normal_column = c;
+      const auto &relevant = grid.relevant_global_indices();
+      const auto &tangential_constraints =
+        grid.dirichlet_constraints(tangential);
+      for (unsigned int l = 0; l < relevant.size(); ++l)
+        if (dof_column[normal][l] == normal_column &&
+            !tangential_constraints.is_constrained(relevant[l]))
           {
-            if (f.no_slip)
-              continue;
-            const auto   id     = mesh.boundary_id(f.name);
-            unsigned int normal = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              if (std::find(fixed_names[d].begin(),
-                            fixed_names[d].end(),
-                            f.name) != fixed_names[d].end())
-                normal = d;
-            const unsigned int tangential = 1 - normal;
-            double             outward    = 0;
-            for (const auto &cell : handler.active_cell_iterators())
-              for (const auto face_no : cell->face_indices())
-                if (cell->face(face_no)->at_boundary() &&
-                    cell->face(face_no)->boundary_id() == id)
-                  {
-                    const auto face = cell->face(face_no);
-                    const auto t    = face->vertex(1) - face->vertex(0);
-                    AssertThrow(std::abs(t[normal]) <= 1e-10 * t.norm(),
-                                ExcMessage(
-                                  "Boundary conditions/Friction coefficient: "
-                                  "boundary '" +
-                                  f.name + "' has its " +
-                                  component_names[normal] +
-                                  " velocity fixed but is not perpendicular "
-                                  "to " +
-                                  component_names[normal] +
-                                  " (friction needs axis-aligned walls)."));
-                    outward += face->center()[normal] - cell->center()[normal];
-                  }
-            const unsigned int column = columns.size();
-            columns.push_back({f.name, tangential});
-            column_prescribed.push_back(false);
-            unsigned int normal_column = invalid;
-            for (unsigned int c = 0; c < columns.size(); ++c)
-              if (columns[c].name == f.name && columns[c].component == normal)
-                normal_column = c;
-            const auto &tangential_constraints =
-              grid.dirichlet_constraints(tangential);
-            for (unsigned int l = 0; l < n_dofs; ++l)
-              if (dof_column[normal][l] == normal_column &&
-                  !tangential_constraints.is_constrained(relevant[l]))
-                {
-                  wall_of[l] = walls.size();
-                  walls.push_back({l,
-                                   normal,
-                                   tangential,
-                                   outward > 0 ? 1. : -1.,
-                                   f.mu,
-                                   column});
-                }
+            wall_of[l] = walls.size();
+            walls.push_back(
+              {l, normal, tangential, outward > 0 ? 1. : -1., f.mu, column});
           }
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::collect_entries(const State<dim> &state)
+    {
+      const auto        &grid  = *state.grid;
       const unsigned int n     = grid.dofs_per_cell;
       const auto        &cells = grid.cell_dofs();
       for (unsigned int d = 0; d < dim; ++d)
@@ -503,7 +546,13 @@ namespace psmpm
                    w != invalid && walls[w].normal == d ? w : invalid});
               }
         }
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::collect_prescribed_dofs()
+    {
+      const unsigned int n_dofs = wall_of.size();
       for (unsigned int b = 0; b < prescribed.size(); ++b)
         for (unsigned int d = 0; d < dim; ++d)
           for (unsigned int l = 0; l < n_dofs; ++l)
@@ -513,7 +562,13 @@ namespace psmpm
                   columns[column].name == prescribed[b].name)
                 prescribed_dofs.push_back({l, d, b});
             }
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::allocate_results(const State<dim> &state)
+    {
+      const auto &grid = *state.grid;
       reactions.assign(columns.size(), 0.);
       wall_normal.assign(walls.size(), 0.);
       hold_capacity.assign(walls.size(), 0.);
@@ -523,10 +578,11 @@ namespace psmpm
                                               grid.get_communicator()) > 1;
       if (sum_over_ranks)
         {
-          const auto &owned = grid.locally_owned_dofs();
+          const auto &owned    = grid.locally_owned_dofs();
+          const auto &relevant = grid.relevant_global_indices();
           for (unsigned int w = 0; w < walls.size(); ++w)
             wall_owned[w] = owned.is_element(relevant[walls[w].dof]);
-          relevant_buffer.assign(n_dofs, 0.);
+          relevant_buffer.assign(relevant.size(), 0.);
           owned_buffer.assign(owned.n_elements(), 0.);
         }
     }
@@ -535,35 +591,54 @@ namespace psmpm
     void
     BoundaryConditions<dim>::after_acceleration(State<dim> &state)
     {
-      auto        &a    = state.grid_acceleration;
-      auto        &grid = *state.grid;
-      const double dt   = state.dt;
+      apply_local_damping(state);
+      prescribe_acceleration(state);
+      compute_reactions(state);
+      if (sum_over_ranks)
+        sum_wall_normals(state);
+      apply_friction(state);
+      const MPI_Comm comm = state.grid->get_communicator();
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+        Utilities::MPI::sum(reactions, comm, reactions);
+      if (!prescribed.empty())
+        add_prescribed_work(state.dt);
+    }
 
-      // Local damping: a force -alpha |f_i| sign(v_i) per component, with
-      // f_i = m_i a_i of the lumped mass (constrained DoFs have a = 0).
-      const bool have_velocity = state.grid_velocity.size() == a.size();
-      if (local_damping > 0 && have_velocity)
-        {
-          const auto &mass = grid.lumped_mass();
-          double      work = 0;
-          for (unsigned int l = 0; l < a.size(); ++l)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const double v = state.grid_velocity[l][d];
-                if (v == 0)
-                  continue;
-                const double change =
-                  -local_damping * std::abs(a[l][d]) * (v > 0 ? 1. : -1.);
-                a[l][d] += change;
-                work += mass[l] * change * v * dt;
-              }
-          accumulated_damping_work += work;
-        }
+    template <int dim>
+    void
+    BoundaryConditions<dim>::apply_local_damping(State<dim> &state)
+    {
+      // A force -alpha |f_i| sign(v_i) per component, with f_i = m_i a_i
+      // of the lumped mass (constrained DoFs have a = 0).
+      auto        &a  = state.grid_acceleration;
+      const double dt = state.dt;
+      if (!(local_damping > 0 && state.grid_velocity.size() == a.size()))
+        return;
+      const auto &mass = state.grid->lumped_mass();
+      double      work = 0;
+      for (unsigned int l = 0; l < a.size(); ++l)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double v = state.grid_velocity[l][d];
+            if (v == 0)
+              continue;
+            const double change =
+              -local_damping * std::abs(a[l][d]) * (v > 0 ? 1. : -1.);
+            a[l][d] += change;
+            work += mass[l] * change * v * dt;
+          }
+      accumulated_damping_work += work;
+    }
 
-      // Prescribed accelerations: from the velocity imposed at the end of
-      // the last step to v(t + dt), the time derivative for a smooth v;
-      // a jump at the start (a plate set moving at once) is an impulse
-      // whose reaction and work are then counted, not lost.
+    template <int dim>
+    void
+    BoundaryConditions<dim>::prescribe_acceleration(State<dim> &state)
+    {
+      // From the velocity imposed at the end of the last step to
+      // v(t + dt), the time derivative for a smooth v; a jump at the start
+      // (a plate set moving at once) is an impulse whose reaction and work
+      // are then counted, not lost.
+      const double dt = state.dt;
       for (auto &p : prescribed)
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -572,14 +647,21 @@ namespace psmpm
             p.imposed[d]   = p.new_value[d];
           }
       for (const auto &p : prescribed_dofs)
-        a[p.dof][p.component] =
+        state.grid_acceleration[p.dof][p.component] =
           (prescribed[p.boundary].new_value[p.component] -
            prescribed[p.boundary].old_value[p.component]) /
           dt;
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::compute_reactions(State<dim> &state)
+    {
       // R = M a - b on the constrained DoFs, from the cell arrays the
       // solve was assembled from (owned cells: the sum over ranks is the
       // boundary's total).
+      const auto &a    = state.grid_acceleration;
+      auto       &grid = *state.grid;
       std::fill(reactions.begin(), reactions.end(), 0.);
       std::fill(wall_normal.begin(), wall_normal.end(), 0.);
       const unsigned int n     = grid.dofs_per_cell;
@@ -626,26 +708,35 @@ namespace psmpm
                   ma += patch.values[k * patch.n + m] * a[patch.dofs[m]][d];
                 reactions[column] += patch.weight * ma;
               }
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::sum_wall_normals(const State<dim> &state)
+    {
       // A wall DoF's normal force is summed over the cells of every rank
       // that holds some of them, so that every rank that sees the DoF
       // applies the same friction to it.
-      if (sum_over_ranks)
-        {
-          const auto &exchange = grid.ghost_exchange();
-          for (unsigned int w = 0; w < walls.size(); ++w)
-            relevant_buffer[walls[w].dof] = wall_normal[w];
-          exchange.sum_to_owned(relevant_buffer, owned_buffer.data());
-          exchange.owned_to_relevant(owned_buffer.data(), relevant_buffer);
-          for (unsigned int w = 0; w < walls.size(); ++w)
-            wall_normal[w] = relevant_buffer[walls[w].dof];
-        }
+      const auto &exchange = state.grid->ghost_exchange();
+      for (unsigned int w = 0; w < walls.size(); ++w)
+        relevant_buffer[walls[w].dof] = wall_normal[w];
+      exchange.sum_to_owned(relevant_buffer, owned_buffer.data());
+      exchange.owned_to_relevant(owned_buffer.data(), relevant_buffer);
+      for (unsigned int w = 0; w < walls.size(); ++w)
+        wall_normal[w] = relevant_buffer[walls[w].dof];
+    }
 
+    template <int dim>
+    void
+    BoundaryConditions<dim>::apply_friction(State<dim> &state)
+    {
       // Coulomb friction on the DoFs in contact (the wall pushes into the
       // body: R_n against the outward normal).
-      const auto &mass       = grid.lumped_mass();
-      const bool  have_speed = state.grid_velocity.size() == a.size();
-      double      work       = 0;
+      auto        &a          = state.grid_acceleration;
+      const double dt         = state.dt;
+      const auto  &mass       = state.grid->lumped_mass();
+      const bool   have_speed = state.grid_velocity.size() == a.size();
+      double       work       = 0;
       for (unsigned int w = 0; w < walls.size(); ++w)
         {
           const WallDof &wall = walls[w];
@@ -671,36 +762,33 @@ namespace psmpm
           work += force * 0.5 * (v + next) * dt;
         }
       if (sum_over_ranks)
-        work = Utilities::MPI::sum(work, grid.get_communicator());
+        work = Utilities::MPI::sum(work, state.grid->get_communicator());
       accumulated_friction_work += work;
+    }
 
-      const MPI_Comm comm = grid.get_communicator();
-      if (Utilities::MPI::n_mpi_processes(comm) > 1)
-        Utilities::MPI::sum(reactions, comm, reactions);
-
-      // Work of the prescribed boundaries: the reaction at the middle of
-      // the step times the step's mean velocity. The reaction of the step
-      // is that of the stress at its start; a plate loading a body at
-      // constant speed raises it linearly, and R_n v dt alone would
-      // lag the strain energy by 1/n after n steps (the energy monitor
-      // then saw growth without work in the first steps). Extrapolated
-      // to the middle, R_n + (R_n - R_{n-1}) / 2, the sum is exact for
-      // that ramp.
-      if (!prescribed.empty())
-        {
-          if (previous_reactions.size() != reactions.size())
-            previous_reactions = reactions;
-          for (unsigned int c = 0; c < columns.size(); ++c)
-            if (column_prescribed[c])
-              for (const auto &p : prescribed)
-                if (p.name == columns[c].name)
-                  accumulated_prescribed_work +=
-                    (1.5 * reactions[c] - 0.5 * previous_reactions[c]) * 0.5 *
-                    (p.old_value[columns[c].component] +
-                     p.new_value[columns[c].component]) *
-                    dt;
-          previous_reactions = reactions;
-        }
+    template <int dim>
+    void
+    BoundaryConditions<dim>::add_prescribed_work(const double dt)
+    {
+      // The reaction at the middle of the step times the step's mean
+      // velocity. The reaction of the step is that of the stress at its
+      // start; a plate loading a body at constant speed raises it
+      // linearly, and R_n v dt alone would lag the strain energy by 1/n
+      // after n steps (the energy monitor then saw growth without work in
+      // the first steps). Extrapolated to the middle, R_n + (R_n -
+      // R_{n-1}) / 2, the sum is exact for that ramp.
+      if (previous_reactions.size() != reactions.size())
+        previous_reactions = reactions;
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        if (column_prescribed[c])
+          for (const auto &p : prescribed)
+            if (p.name == columns[c].name)
+              accumulated_prescribed_work +=
+                (1.5 * reactions[c] - 0.5 * previous_reactions[c]) * 0.5 *
+                (p.old_value[columns[c].component] +
+                 p.new_value[columns[c].component]) *
+                dt;
+      previous_reactions = reactions;
     }
 
     template <int dim>

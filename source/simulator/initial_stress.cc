@@ -71,6 +71,305 @@ namespace psmpm
         probe.print_parameters(text, ParameterHandler::ShortPRM);
         return text.str().find("set Friction angle") != std::string::npos;
       }
+
+      /// Refuse Stress = geostatic or function (@p entry) for a material
+      /// whose particles exist (by body id; 0 alone without Bodies) and
+      /// whose stress follows from the deformation.
+      template <int dim>
+      void
+      check_accepts_initial_stress(const Material::MaterialSet<dim> &materials,
+                                   const Particles::Bodies          &bodies,
+                                   const std::string                &entry)
+      {
+        std::vector<unsigned int> ids{0};
+        for (const auto &body : bodies.bodies)
+          ids.push_back(body.number);
+        for (const unsigned int id : ids)
+          {
+            if (id == 0 && !bodies.bodies.empty())
+              continue;
+            const auto &m = materials.of_body(id);
+            AssertThrow(m.accepts_initial_stress(),
+                        ExcMessage(
+                          entry + ": " + m.path + "/Model = " + m.name() +
+                          " cannot start from a prescribed stress (its "
+                          "stress follows from the deformation gradient); "
+                          "use Stress = none or a rate model such as "
+                          "hypoelastic."));
+          }
+      }
+
+      /// Refuse a Stress function that does not parse or evaluate.
+      template <int dim>
+      void
+      check_stress_function(const std::string &expression,
+                            const std::string &constants_text)
+      {
+        const auto         constants = parse_function_constants(constants_text);
+        const unsigned int n         = n_stress_components<dim>;
+        try
+          {
+            FunctionParser<dim> f(n);
+            f.initialize(dim == 1 ? "x" : "x,y", expression, constants);
+            // Parse errors of muParser surface at the first evaluation.
+            Vector<double> values(n);
+            f.vector_value(Point<dim>(), values);
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(
+              false,
+              ExcMessage("Initial conditions/Stress function = '" + expression +
+                         "': " + e.what() + " (expected " + std::to_string(n) +
+                         " expressions separated by ';': " +
+                         (dim == 2 ? "sxx; syy; sxy; szz" : "sxx; lateral") +
+                         ")."));
+          }
+      }
+
+      /// The number of K0 = @p text, 0 for automatic.
+      double
+      parse_k0(const std::string &text)
+      {
+        if (text == "automatic")
+          return 0;
+        double value  = 0;
+        bool   number = true;
+        try
+          {
+            value = Utilities::string_to_double(text);
+          }
+        catch (...)
+          {
+            number = false;
+          }
+        AssertThrow(number && std::isfinite(value) && value > 0,
+                    ExcMessage("Initial conditions/K0 = " + text +
+                               ": must be automatic or a number > 0 (the "
+                               "ratio of horizontal to vertical stress)."));
+        return value;
+      }
+
+      /// K0 = automatic for material @p m: 1 - sin(phi) with the Friction
+      /// angle phi of its subsection of @p prm if its model has one, else
+      /// the elastic nu / (1 - nu).
+      template <int dim>
+      double
+      automatic_k0(ParameterHandler &prm, const Material::Material<dim> &m)
+      {
+        const double nu  = m.poisson_ratio;
+        double       phi = -1;
+        if (has_friction_angle<dim>(m.name()))
+          {
+            const unsigned int depth = enter_path(prm, m.path);
+            try
+              {
+                phi = prm.get_double("Friction angle");
+              }
+            catch (...)
+              {
+                for (unsigned int i = 0; i < depth; ++i)
+                  prm.leave_subsection();
+                throw;
+              }
+            for (unsigned int i = 0; i < depth; ++i)
+              prm.leave_subsection();
+          }
+        return phi >= 0 ? 1 - std::sin(phi * numbers::PI / 180) : nu / (1 - nu);
+      }
+
+      /// The columns of the geostatic stress: "up" (against gravity) and,
+      /// in 2D, the direction across it; the layout's spacing along and
+      /// across up (on Gmsh meshes each particle's own size,
+      /// volume^(1/dim), and the largest for the bins); and bins across up
+      /// a quarter of the spacing wide. A particle looks at its own bin
+      /// and one on either side, that is between a quarter and half a
+      /// spacing to each side: its own column of a regular layout, never
+      /// the neighbouring ones.
+      template <int dim>
+      struct GeostaticColumns
+      {
+        Tensor<1, dim> up, across;
+        double         along = 0, width = 0, largest = 0;
+        bool           lattice = true;
+        double         lo = 0, bin = 1;
+        std::size_t    n_bins = 1;
+
+        double
+        size(const Particles::ParticleSet<dim> &particles,
+             const std::size_t                  p) const
+        {
+          return std::pow(particles.volume[p], 1. / dim);
+        }
+
+        double
+        half_along(const Particles::ParticleSet<dim> &particles,
+                   const std::size_t                  p) const
+        {
+          return lattice ? 0.5 * along : 0.5 * size(particles, p);
+        }
+
+        std::size_t
+        bin_of(const Particles::ParticleSet<dim> &particles,
+               const std::size_t                  p) const
+        {
+          if (dim == 1)
+            return 0;
+          return std::min(n_bins - 1,
+                          std::size_t((particles.position[p] * across - lo) /
+                                      bin));
+        }
+      };
+
+      /// The columns of @p particles under @p gravity (of norm @p g);
+      /// false if there is no particle on any rank.
+      template <int dim>
+      bool
+      make_columns(const Particles::ParticleSet<dim> &particles,
+                   const Tensor<1, dim>              &gravity,
+                   const double                       g,
+                   const Tensor<1, dim>              &spacing,
+                   MPI_Comm                           comm,
+                   GeostaticColumns<dim>             &columns)
+      {
+        const std::size_t n = particles.size();
+        columns.up          = -gravity / g;
+        if constexpr (dim == 2)
+          {
+            columns.across[0] = columns.up[1];
+            columns.across[1] = -columns.up[0];
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            columns.along += std::abs(columns.up[d]) * spacing[d];
+            columns.width += std::abs(columns.across[d]) * spacing[d];
+          }
+        columns.lattice = columns.along > 0;
+        if (!columns.lattice)
+          {
+            for (std::size_t p = 0; p < n; ++p)
+              columns.largest =
+                std::max(columns.largest, columns.size(particles, p));
+            columns.largest = Utilities::MPI::max(columns.largest, comm);
+            columns.along = columns.width = columns.largest;
+          }
+        double lo = std::numeric_limits<double>::max(), hi = -lo;
+        for (std::size_t p = 0; p < n; ++p)
+          {
+            const double s = particles.position[p] * columns.across;
+            lo             = std::min(lo, s);
+            hi             = std::max(hi, s);
+          }
+        lo = Utilities::MPI::min(lo, comm);
+        hi = Utilities::MPI::max(hi, comm);
+        if (lo > hi)
+          return false;
+        columns.lo  = lo;
+        columns.bin = dim == 1 ? 1. : 0.25 * columns.width;
+        columns.n_bins =
+          dim == 1 ? 1 : std::size_t((hi - lo) / columns.bin) + 1;
+        return true;
+      }
+
+      /// Per body (of @p n_ids) and bin: the top (largest z + half
+      /// spacing) and minus the bottom (so that one MPI max reduction
+      /// finds both), over all ranks; @p none where a bin is empty.
+      template <int dim>
+      std::vector<double>
+      column_extent(const Particles::ParticleSet<dim> &particles,
+                    const GeostaticColumns<dim>       &columns,
+                    const unsigned int                 n_ids,
+                    const double                       none,
+                    MPI_Comm                           comm)
+      {
+        const std::size_t   m = std::size_t(n_ids) * columns.n_bins;
+        std::vector<double> extent(2 * m, none);
+        for (std::size_t p = 0; p < particles.size(); ++p)
+          {
+            const std::size_t k = particles.body_id[p] * columns.n_bins +
+                                  columns.bin_of(particles, p);
+            const double z = particles.position[p] * columns.up;
+            const double c = columns.half_along(particles, p);
+            extent[k]      = std::max(extent[k], z + c);
+            extent[m + k]  = std::max(extent[m + k], -(z - c));
+          }
+        Utilities::MPI::max(extent, comm, extent);
+        return extent;
+      }
+
+      /// Over the window of a bin and its neighbours: the @p top and
+      /// @p bottom of each body from its @p extent.
+      void
+      window_extent(const std::vector<double> &extent,
+                    const unsigned int         n_ids,
+                    const std::size_t          n_bins,
+                    const double               none,
+                    std::vector<double>       &top,
+                    std::vector<double>       &bottom)
+      {
+        const std::size_t m = std::size_t(n_ids) * n_bins;
+        top.assign(m, none);
+        bottom.assign(m, -none);
+        for (unsigned int k = 0; k < n_ids; ++k)
+          for (std::size_t b = 0; b < n_bins; ++b)
+            for (std::size_t w = (b > 0 ? b - 1 : 0);
+                 w <= std::min(b + 1, n_bins - 1);
+                 ++w)
+              if (extent[k * n_bins + w] != none)
+                {
+                  top[k * n_bins + b] =
+                    std::max(top[k * n_bins + b], extent[k * n_bins + w]);
+                  bottom[k * n_bins + b] =
+                    std::min(bottom[k * n_bins + b],
+                             -extent[m + k * n_bins + w]);
+                }
+      }
+
+      /// The weight resting on each body's top per bin: a body whose
+      /// bottom lies within @p contact of the top of another in the same
+      /// column rests on it with its own column weight and what rests on
+      /// it in turn; bodies are taken from the highest top down so that
+      /// the upper loads are known.
+      std::vector<double>
+      column_loads(const std::vector<double> &top,
+                   const std::vector<double> &bottom,
+                   const std::vector<double> &densities,
+                   const double               g,
+                   const double               contact,
+                   const unsigned int         n_ids,
+                   const std::size_t          n_bins,
+                   const double               none)
+      {
+        std::vector<double>   load(top.size(), 0.);
+        std::vector<unsigned> order(n_ids);
+        for (std::size_t b = 0; b < n_bins && n_ids > 1; ++b)
+          {
+            const auto at = [&](const unsigned int k) {
+              return k * n_bins + b;
+            };
+            for (unsigned int k = 0; k < n_ids; ++k)
+              order[k] = k;
+            std::sort(order.begin(), order.end(), [&](unsigned i, unsigned j) {
+              return top[at(i)] > top[at(j)];
+            });
+            for (unsigned int i = 0; i < n_ids; ++i)
+              {
+                const unsigned int k = order[i];
+                if (top[at(k)] == none)
+                  break;
+                for (unsigned int j = 0; j < i; ++j)
+                  {
+                    const unsigned int a = order[j];
+                    if (top[at(a)] > top[at(k)] &&
+                        std::abs(bottom[at(a)] - top[at(k)]) <= contact)
+                      load[at(k)] +=
+                        densities[a] * g * (top[at(a)] - bottom[at(a)]) +
+                        load[at(a)];
+                  }
+              }
+          }
+        return load;
+      }
     } // namespace
 
 
@@ -130,49 +429,10 @@ namespace psmpm
       if (type == Type::none)
         return;
       const std::string entry = "Initial conditions/Stress = " + name;
-
-      // The materials whose particles exist, by body id (0 alone without
-      // Bodies).
-      std::vector<unsigned int> ids{0};
-      for (const auto &body : bodies.bodies)
-        ids.push_back(body.number);
-      for (const unsigned int id : ids)
-        {
-          if (id == 0 && !bodies.bodies.empty())
-            continue;
-          const auto &m = materials.of_body(id);
-          AssertThrow(m.accepts_initial_stress(),
-                      ExcMessage(
-                        entry + ": " + m.path + "/Model = " + m.name() +
-                        " cannot start from a prescribed stress (its stress "
-                        "follows from the deformation gradient); use Stress "
-                        "= none or a rate model such as hypoelastic."));
-        }
-
+      check_accepts_initial_stress(materials, bodies, entry);
       if (type == Type::function)
         {
-          const auto constants = parse_function_constants(function_constants);
-          const unsigned int n = n_stress_components<dim>;
-          try
-            {
-              FunctionParser<dim> f(n);
-              f.initialize(dim == 1 ? "x" : "x,y",
-                           function_expression,
-                           constants);
-              // Parse errors of muParser surface at the first evaluation.
-              Vector<double> values(n);
-              f.vector_value(Point<dim>(), values);
-            }
-          catch (const std::exception &e)
-            {
-              AssertThrow(
-                false,
-                ExcMessage(
-                  "Initial conditions/Stress function = '" +
-                  function_expression + "': " + e.what() + " (expected " +
-                  std::to_string(n) + " expressions separated by ';': " +
-                  (dim == 2 ? "sxx; syy; sxy; szz" : "sxx; lateral") + ")."));
-            }
+          check_stress_function<dim>(function_expression, function_constants);
           return;
         }
 
@@ -180,50 +440,12 @@ namespace psmpm
                   ExcMessage(entry +
                              " needs a non-zero Body force/Gravity (the "
                              "stress at rest under gravity)."));
-      double k0_value = 0;
-      if (k0_text != "automatic")
-        {
-          bool number = true;
-          try
-            {
-              k0_value = Utilities::string_to_double(k0_text);
-            }
-          catch (...)
-            {
-              number = false;
-            }
-          AssertThrow(number && std::isfinite(k0_value) && k0_value > 0,
-                      ExcMessage("Initial conditions/K0 = " + k0_text +
-                                 ": must be automatic or a number > 0 (the "
-                                 "ratio of horizontal to vertical stress)."));
-        }
+      const double k0_value = parse_k0(k0_text);
       k0.assign(bodies.bodies.size() + 1, k0_value);
       if (k0_value > 0)
         return;
       for (unsigned int id = 0; id < k0.size(); ++id)
-        {
-          const auto  &m   = materials.of_body(id);
-          const double nu  = m.poisson_ratio;
-          double       phi = -1;
-          if (has_friction_angle<dim>(m.name()))
-            {
-              const unsigned int depth = enter_path(prm, m.path);
-              try
-                {
-                  phi = prm.get_double("Friction angle");
-                }
-              catch (...)
-                {
-                  for (unsigned int i = 0; i < depth; ++i)
-                    prm.leave_subsection();
-                  throw;
-                }
-              for (unsigned int i = 0; i < depth; ++i)
-                prm.leave_subsection();
-            }
-          k0[id] =
-            phi >= 0 ? 1 - std::sin(phi * numbers::PI / 180) : nu / (1 - nu);
-        }
+        k0[id] = automatic_k0(prm, materials.of_body(id));
     }
 
 
@@ -284,132 +506,29 @@ namespace psmpm
                                         std::vector<double> &out_of_plane,
                                         MPI_Comm             comm) const
     {
-      const std::size_t  n     = particles.size();
-      const unsigned int n_ids = k0.size();
-      const double       g     = gravity.norm();
-      // "Up" and, in 2D, the direction across it: the columns.
-      const Tensor<1, dim> up = -gravity / g;
-      Tensor<1, dim>       across;
-      if constexpr (dim == 2)
-        {
-          across[0] = up[1];
-          across[1] = -up[0];
-        }
-      // The layout's spacing along and across up; on Gmsh meshes each
-      // particle's own size (volume^(1/dim)) and the largest for the bins.
-      double along = 0, width = 0;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          along += std::abs(up[d]) * spacing[d];
-          width += std::abs(across[d]) * spacing[d];
-        }
-      const bool lattice = along > 0;
-      const auto size    = [&](const std::size_t p) {
-        return std::pow(particles.volume[p], 1. / dim);
-      };
-      double largest = 0;
-      if (!lattice)
-        {
-          for (std::size_t p = 0; p < n; ++p)
-            largest = std::max(largest, size(p));
-          largest = Utilities::MPI::max(largest, comm);
-          along = width = largest;
-        }
-      const auto half_along = [&](const std::size_t p) {
-        return lattice ? 0.5 * along : 0.5 * size(p);
-      };
-
-      // Columns across up: bins a quarter of the spacing wide. A particle
-      // looks at its own bin and one on either side, that is between a
-      // quarter and half a spacing to each side: its own column of a
-      // regular layout, never the neighbouring ones.
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
-      for (std::size_t p = 0; p < n; ++p)
-        {
-          const double s = particles.position[p] * across;
-          lo             = std::min(lo, s);
-          hi             = std::max(hi, s);
-        }
-      lo = Utilities::MPI::min(lo, comm);
-      hi = Utilities::MPI::max(hi, comm);
-      if (lo > hi)
+      const unsigned int    n_ids = k0.size();
+      const double          g     = gravity.norm();
+      GeostaticColumns<dim> columns;
+      if (!make_columns(particles, gravity, g, spacing, comm, columns))
         return; // no particle on any rank
-      const double      bin = dim == 1 ? 1. : 0.25 * width;
-      const std::size_t n_bins =
-        dim == 1 ? 1 : std::size_t((hi - lo) / bin) + 1;
-      const auto bin_of = [&](const std::size_t p) -> std::size_t {
-        if (dim == 1)
-          return 0;
-        return std::min(n_bins - 1,
-                        std::size_t((particles.position[p] * across - lo) /
-                                    bin));
-      };
+      const std::size_t   n_bins = columns.n_bins;
+      const double        none   = std::numeric_limits<double>::lowest();
+      std::vector<double> top, bottom;
+      window_extent(column_extent(particles, columns, n_ids, none, comm),
+                    n_ids,
+                    n_bins,
+                    none,
+                    top,
+                    bottom);
+      const double contact = columns.lattice ? columns.along : columns.largest;
+      const std::vector<double> load =
+        column_loads(top, bottom, densities, g, contact, n_ids, n_bins, none);
 
-      // Per body and bin: the top (largest z + half spacing) and minus the
-      // bottom (so that one MPI max reduction finds both).
-      const double        none = std::numeric_limits<double>::lowest();
-      const std::size_t   m    = std::size_t(n_ids) * n_bins;
-      std::vector<double> extent(2 * m, none);
-      for (std::size_t p = 0; p < n; ++p)
-        {
-          const std::size_t k = particles.body_id[p] * n_bins + bin_of(p);
-          const double      z = particles.position[p] * up;
-          const double      c = half_along(p);
-          extent[k]           = std::max(extent[k], z + c);
-          extent[m + k]       = std::max(extent[m + k], -(z - c));
-        }
-      Utilities::MPI::max(extent, comm, extent);
-
-      // Over the window of a bin and its neighbours: top, bottom, and the
-      // weight resting on the body's top there.
-      std::vector<double> top(m, none), bottom(m, -none), load(m, 0.);
-      for (unsigned int k = 0; k < n_ids; ++k)
-        for (std::size_t b = 0; b < n_bins; ++b)
-          for (std::size_t w = (b > 0 ? b - 1 : 0);
-               w <= std::min(b + 1, n_bins - 1);
-               ++w)
-            if (extent[k * n_bins + w] != none)
-              {
-                top[k * n_bins + b] =
-                  std::max(top[k * n_bins + b], extent[k * n_bins + w]);
-                bottom[k * n_bins + b] =
-                  std::min(bottom[k * n_bins + b], -extent[m + k * n_bins + w]);
-              }
-      // A body whose bottom lies within one spacing of the top of another
-      // in the same column rests on it with its own column weight and what
-      // rests on it in turn; bodies are taken from the highest top down so
-      // that the upper loads are known.
-      const double          contact = lattice ? along : largest;
-      std::vector<unsigned> order(n_ids);
-      for (std::size_t b = 0; b < n_bins && n_ids > 1; ++b)
-        {
-          const auto at = [&](const unsigned int k) { return k * n_bins + b; };
-          for (unsigned int k = 0; k < n_ids; ++k)
-            order[k] = k;
-          std::sort(order.begin(), order.end(), [&](unsigned i, unsigned j) {
-            return top[at(i)] > top[at(j)];
-          });
-          for (unsigned int i = 0; i < n_ids; ++i)
-            {
-              const unsigned int k = order[i];
-              if (top[at(k)] == none)
-                break;
-              for (unsigned int j = 0; j < i; ++j)
-                {
-                  const unsigned int a = order[j];
-                  if (top[at(a)] > top[at(k)] &&
-                      std::abs(bottom[at(a)] - top[at(k)]) <= contact)
-                    load[at(k)] +=
-                      densities[a] * g * (top[at(a)] - bottom[at(a)]) +
-                      load[at(a)];
-                }
-            }
-        }
-
-      for (std::size_t p = 0; p < n; ++p)
+      const Tensor<1, dim> &up = columns.up, &across = columns.across;
+      for (std::size_t p = 0; p < particles.size(); ++p)
         {
           const unsigned int k  = particles.body_id[p];
-          const std::size_t  at = k * n_bins + bin_of(p);
+          const std::size_t  at = k * n_bins + columns.bin_of(particles, p);
           const double       sv =
             -(densities[k] * g * (top[at] - particles.position[p] * up) +
               load[at]);

@@ -172,6 +172,80 @@ namespace psmpm
                     double                      *block,
                     std::array<double, 3>       &plastic_increment) const;
 
+    private:
+      /// What the update of every particle of a batch uses: the Lame
+      /// constants and the reference density.
+      struct BatchConstants
+      {
+        double lambda;
+        double two_g;
+        double rho0;
+      };
+
+      /// The strength of the particle with state @p block: @p base, or
+      /// with softening and kappa > 0 its own, prepared by @p ret in
+      /// @p softened (no copy per particle otherwise).
+      template <typename Return>
+      const Strength &
+      particle_strength(const Return   &ret,
+                        const Strength &base,
+                        const double   *block,
+                        Strength       &softened) const;
+
+      /// The update of one particle in uniaxial strain (1D) with the
+      /// strain increment @p de: axial stress @p stress_xx, state
+      /// @p block, V_new / V_old in @p volume_ratio.
+      template <typename Return>
+      void
+      update_uniaxial(const Return         &ret,
+                      const Strength       &s,
+                      const BatchConstants &c,
+                      const double          de,
+                      double               &stress_xx,
+                      double               *block,
+                      double               &volume_ratio) const;
+
+      /// The update of one particle in plane strain (2D) with the
+      /// velocity gradient increment @p dL.
+      template <typename Return>
+      void
+      update_plane_strain(const Return          &ret,
+                          const Strength        &s,
+                          const BatchConstants  &c,
+                          const Tensor<2, 2>    &dL,
+                          SymmetricTensor<2, 2> &stress,
+                          double                *block,
+                          double                &volume_ratio) const;
+
+      /// The plane-strain trial stress t = (txx, tyy, txy, tzz): the
+      /// stress @p st and out-of-plane stress @p szz rotated by the
+      /// Hughes-Winget rotation of @p dL's spin, plus the elastic
+      /// increment of @p dL's symmetric part, whose trace goes to @p tr.
+      static void
+      plane_strain_trial(const BatchConstants        &c,
+                         const Tensor<2, 2>          &dL,
+                         const SymmetricTensor<2, 2> &st,
+                         const double                 szz,
+                         double                      &tr,
+                         std::array<double, 4>       &t);
+
+      /// After the return of the principal trial stresses @p trial (the
+      /// in-plane Mohr circle's centre + and - its @p radius, and
+      /// sigma_zz) to @p sigma: the stress back in the x-y frame of the
+      /// trial stress t (half difference (txx - tyy) / 2 @p half, shear
+      /// t[2]) into @p t, and the plastic strain and work into @p block.
+      template <typename Return>
+      void
+      plane_strain_return(const Return                &ret,
+                          const BatchConstants        &c,
+                          const std::array<double, 3> &trial,
+                          std::array<double, 3>       &sigma,
+                          const double                 half,
+                          const double                 radius,
+                          double                      *block,
+                          std::array<double, 4>       &t) const;
+
+    protected:
       bool
       softens() const
       {

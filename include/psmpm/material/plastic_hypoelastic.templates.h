@@ -72,6 +72,169 @@ namespace psmpm
 
     template <int dim>
     template <typename Return>
+    DEAL_II_ALWAYS_INLINE inline const typename PlasticHypoelastic<
+      dim>::Strength &
+    PlasticHypoelastic<dim>::particle_strength(const Return   &ret,
+                                               const Strength &base,
+                                               const double   *block,
+                                               Strength       &softened) const
+    {
+      if (softens() && block[kappa_column] > 0)
+        {
+          softened = strength(block[kappa_column]);
+          ret.prepare(softened);
+          return softened;
+        }
+      return base;
+    }
+
+
+
+    template <int dim>
+    template <typename Return>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::update_uniaxial(const Return         &ret,
+                                             const Strength       &s,
+                                             const BatchConstants &c,
+                                             const double          de,
+                                             double               &stress_xx,
+                                             double               *block,
+                                             double &volume_ratio) const
+    {
+      // Uniaxial strain: the principal stresses are the axial one and the
+      // two equal lateral ones; nothing rotates.
+      std::array<double, 3> sigma = {{stress_xx + (c.lambda + c.two_g) * de,
+                                      block[out_of_plane] + c.lambda * de,
+                                      block[out_of_plane] + c.lambda * de}};
+      double               &J     = block[ratio_column];
+      J *= 1 + de;
+      volume_ratio                      = 1 + de;
+      const std::array<double, 3> trial = sigma;
+      if (!ret.inside(s, sigma) && ret(s, sigma))
+        {
+          std::array<double, 3> ep;
+          finish_return(ret, trial, sigma, block, ep);
+          block[plastic_xx] += ep[0];
+          block[2] += 0.5 * (ep[1] + ep[2]);
+          block[work_column] +=
+            J * (sigma[0] * ep[0] + sigma[1] * ep[1] + sigma[2] * ep[2]) /
+            c.rho0;
+        }
+      stress_xx           = sigma[0];
+      block[out_of_plane] = 0.5 * (sigma[1] + sigma[2]);
+    }
+
+
+
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::plane_strain_trial(const BatchConstants        &c,
+                                                const Tensor<2, 2>          &dL,
+                                                const SymmetricTensor<2, 2> &st,
+                                                const double           szz,
+                                                double                &tr,
+                                                std::array<double, 4> &t)
+    {
+      const SymmetricTensor<2, 2> de = symmetrize(dL);
+      tr                             = trace(de);
+      // Hughes-Winget rotation of the spin increment w = W_xy.
+      const double w = 0.5 * (dL[0][1] - dL[1][0]);
+      const double u = 0.25 * w * w;
+      // 1 / (1 + u): below u = 1e-6 the series 1 - u + u^2 is the same to
+      // round-off (c^2 + s^2 = 1 + 2 u^3) and saves the division in every
+      // particle's update.
+      const double q   = u < 1e-6 ? 1 - u + u * u : 1 / (1 + u);
+      const double cr  = (1 - u) * q;
+      const double sn  = w * q;
+      const double sxx = st[0][0], syy = st[1][1], sxy = st[0][1];
+      const double cc = cr * cr, ss = sn * sn, cs = cr * sn;
+      t[0] =
+        cc * sxx + 2 * cs * sxy + ss * syy + c.lambda * tr + c.two_g * de[0][0];
+      t[1] =
+        ss * sxx - 2 * cs * sxy + cc * syy + c.lambda * tr + c.two_g * de[1][1];
+      t[2] = -cs * sxx + (cc - ss) * sxy + cs * syy + c.two_g * de[0][1];
+      t[3] = szz + c.lambda * tr;
+    }
+
+
+
+    template <int dim>
+    template <typename Return>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::plane_strain_return(
+      const Return                &ret,
+      const BatchConstants        &c,
+      const std::array<double, 3> &trial,
+      std::array<double, 3>       &sigma,
+      const double                 half,
+      const double                 radius,
+      double                      *block,
+      std::array<double, 4>       &t) const
+    {
+      std::array<double, 3> ep;
+      finish_return(ret, trial, sigma, block, ep);
+      const double inv  = radius > 0 ? 1 / radius : 0;
+      const double cos2 = radius > 0 ? half * inv : 1;
+      const double sin2 = t[2] * inv;
+      const double a    = 0.5 * (sigma[0] + sigma[1]),
+                   b    = 0.5 * (sigma[0] - sigma[1]);
+      t[0]              = a + b * cos2;
+      t[1]              = a - b * cos2;
+      t[2]              = b * sin2;
+      t[3]              = sigma[2];
+      const double ea = 0.5 * (ep[0] + ep[1]), eb = 0.5 * (ep[0] - ep[1]);
+      block[plastic_xx] += ea + eb * cos2;
+      block[2] += ea - eb * cos2;
+      block[3] += eb * sin2;
+      block[4] += ep[2];
+      block[work_column] +=
+        block[ratio_column] *
+        (sigma[0] * ep[0] + sigma[1] * ep[1] + sigma[2] * ep[2]) / c.rho0;
+    }
+
+
+
+    template <int dim>
+    template <typename Return>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::update_plane_strain(const Return          &ret,
+                                                 const Strength        &s,
+                                                 const BatchConstants  &c,
+                                                 const Tensor<2, 2>    &dL,
+                                                 SymmetricTensor<2, 2> &st,
+                                                 double                *block,
+                                                 double &volume_ratio) const
+    {
+      double                tr;
+      std::array<double, 4> t;
+      plane_strain_trial(c, dL, st, block[out_of_plane], tr, t);
+      block[ratio_column] *= 1 + tr;
+      volume_ratio = 1 + tr;
+
+      const double centre  = 0.5 * (t[0] + t[1]);
+      const double half    = 0.5 * (t[0] - t[1]);
+      const double radius2 = half * half + t[2] * t[2];
+      // The elastic test inline and without the square root (most
+      // particles, most steps); the return out of line.
+      if (!ret.inside_plane(s, centre, radius2, t[3]))
+        {
+          const double                radius = std::sqrt(radius2);
+          const std::array<double, 3> trial  = {
+             {centre + radius, centre - radius, t[3]}};
+          std::array<double, 3> sigma = trial;
+          if (ret(s, sigma))
+            plane_strain_return(ret, c, trial, sigma, half, radius, block, t);
+        }
+      st[0][0]            = t[0];
+      st[1][1]            = t[1];
+      st[0][1]            = t[2];
+      block[out_of_plane] = t[3];
+    }
+
+
+
+    template <int dim>
+    template <typename Return>
     void
     PlasticHypoelastic<dim>::update_with(const Return            &ret,
                                          const unsigned int       n,
@@ -80,127 +243,34 @@ namespace psmpm
                                          double                  *state,
                                          double *volume_ratio) const
     {
-      const double       lambda = this->lame_lambda();
-      const double       two_g  = 2 * this->shear_modulus();
-      const double       rho0   = this->density;
-      const unsigned int stride = this->state_stride();
-      Strength           base   = strength(0);
+      const BatchConstants c      = {this->lame_lambda(),
+                                     2 * this->shear_modulus(),
+                                     this->density};
+      const unsigned int   stride = this->state_stride();
+      Strength             base   = strength(0);
       ret.prepare(base);
       for (unsigned int i = 0; i < n; ++i)
         {
           this->request_ahead(n, stress, state, stride, i);
-          double *const block = state + stride * i;
-          // A softened particle's own strength; the batch's otherwise
-          // (no copy per particle).
+          double *const   block = state + stride * i;
           Strength        softened;
-          const Strength *strength_i = &base;
-          if (softens() && block[kappa_column] > 0)
-            {
-              softened = strength(block[kappa_column]);
-              ret.prepare(softened);
-              strength_i = &softened;
-            }
-          const Strength &s = *strength_i;
-
-          double &J = block[ratio_column];
+          const Strength &s = particle_strength(ret, base, block, softened);
           if constexpr (dim == 1)
-            {
-              const double de = dL[i][0][0];
-              // Uniaxial strain: the principal stresses are the axial one
-              // and the two equal lateral ones; nothing rotates.
-              std::array<double, 3> sigma = {
-                {stress[i][0][0] + (lambda + two_g) * de,
-                 block[out_of_plane] + lambda * de,
-                 block[out_of_plane] + lambda * de}};
-              J *= 1 + de;
-              volume_ratio[i]                   = 1 + de;
-              const std::array<double, 3> trial = sigma;
-              if (!ret.inside(s, sigma) && ret(s, sigma))
-                {
-                  std::array<double, 3> ep;
-                  finish_return(ret, trial, sigma, block, ep);
-                  block[plastic_xx] += ep[0];
-                  block[2] += 0.5 * (ep[1] + ep[2]);
-                  block[work_column] +=
-                    J *
-                    (sigma[0] * ep[0] + sigma[1] * ep[1] + sigma[2] * ep[2]) /
-                    rho0;
-                }
-              stress[i][0][0]     = sigma[0];
-              block[out_of_plane] = 0.5 * (sigma[1] + sigma[2]);
-            }
+            update_uniaxial(ret,
+                            s,
+                            c,
+                            dL[i][0][0],
+                            stress[i][0][0],
+                            block,
+                            volume_ratio[i]);
           else
-            {
-              const SymmetricTensor<2, 2> de = symmetrize(dL[i]);
-              const double                tr = trace(de);
-              // Hughes-Winget rotation of the spin increment w = W_xy.
-              const double w = 0.5 * (dL[i][0][1] - dL[i][1][0]);
-              const double u = 0.25 * w * w;
-              // 1 / (1 + u): below u = 1e-6 the series 1 - u + u^2 is the
-              // same to round-off (c^2 + s^2 = 1 + 2 u^3) and saves the
-              // division in every particle's update.
-              const double           q = u < 1e-6 ? 1 - u + u * u : 1 / (1 + u);
-              const double           c = (1 - u) * q;
-              const double           sn = w * q;
-              SymmetricTensor<2, 2> &st = stress[i];
-              const double sxx = st[0][0], syy = st[1][1], sxy = st[0][1];
-              const double cc = c * c, ss = sn * sn, cs = c * sn;
-              double txx = cc * sxx + 2 * cs * sxy + ss * syy + lambda * tr +
-                           two_g * de[0][0];
-              double tyy = ss * sxx - 2 * cs * sxy + cc * syy + lambda * tr +
-                           two_g * de[1][1];
-              double txy =
-                -cs * sxx + (cc - ss) * sxy + cs * syy + two_g * de[0][1];
-              double tzz = block[out_of_plane] + lambda * tr;
-              J *= 1 + tr;
-              volume_ratio[i] = 1 + tr;
-
-              const double centre  = 0.5 * (txx + tyy);
-              const double half    = 0.5 * (txx - tyy);
-              const double radius2 = half * half + txy * txy;
-              // The elastic test inline and without the square root (most
-              // particles, most steps); the return out of line.
-              if (ret.inside_plane(s, centre, radius2, tzz))
-                {
-                  st[0][0]            = txx;
-                  st[1][1]            = tyy;
-                  st[0][1]            = txy;
-                  block[out_of_plane] = tzz;
-                  continue;
-                }
-              const double                radius = std::sqrt(radius2);
-              const std::array<double, 3> trial  = {
-                 {centre + radius, centre - radius, tzz}};
-              std::array<double, 3> sigma = trial;
-              if (ret(s, sigma))
-                {
-                  std::array<double, 3> ep;
-                  finish_return(ret, trial, sigma, block, ep);
-                  const double inv  = radius > 0 ? 1 / radius : 0;
-                  const double cos2 = radius > 0 ? half * inv : 1;
-                  const double sin2 = txy * inv;
-                  const double a    = 0.5 * (sigma[0] + sigma[1]),
-                               b    = 0.5 * (sigma[0] - sigma[1]);
-                  txx               = a + b * cos2;
-                  tyy               = a - b * cos2;
-                  txy               = b * sin2;
-                  tzz               = sigma[2];
-                  const double ea   = 0.5 * (ep[0] + ep[1]),
-                               eb   = 0.5 * (ep[0] - ep[1]);
-                  block[plastic_xx] += ea + eb * cos2;
-                  block[2] += ea - eb * cos2;
-                  block[3] += eb * sin2;
-                  block[4] += ep[2];
-                  block[work_column] +=
-                    J *
-                    (sigma[0] * ep[0] + sigma[1] * ep[1] + sigma[2] * ep[2]) /
-                    rho0;
-                }
-              st[0][0]            = txx;
-              st[1][1]            = tyy;
-              st[0][1]            = txy;
-              block[out_of_plane] = tzz;
-            }
+            update_plane_strain(ret,
+                                s,
+                                c,
+                                dL[i],
+                                stress[i],
+                                block,
+                                volume_ratio[i]);
         }
     }
   } // namespace Material

@@ -239,6 +239,59 @@ namespace psmpm
         unsigned int dof, component, boundary;
       };
 
+      /// The entries Friction coefficient, Prescribed velocity and
+      /// Boundary parts (their text as given, for the messages).
+      void
+      parse_friction(const std::string &text);
+      void
+      parse_prescribed(const std::string &text);
+      void
+      parse_parts(const std::string &text);
+
+      /// The boundaries per component in the order of attribution:
+      /// prescribed, fixed, then no-slip.
+      std::array<std::vector<std::string>, dim>
+      attribution_order(
+        const std::array<std::vector<std::string>, dim> &fixed_names) const;
+      /// A column per boundary and component of @p order, and the column
+      /// of each DoF fixed to zero by the grid (the first one's).
+      void
+      assign_columns(const State<dim>                                &state,
+                     const std::array<std::vector<std::string>, dim> &order,
+                     const Mesh::MeshGenerator<dim>                  &mesh);
+      /// A frictional wall: its normal DoFs whose tangential component is
+      /// free, with the outward sign of the normal from the faces, and
+      /// the column of its tangential reaction.
+      void
+      add_friction_wall(
+        const State<dim>                                &state,
+        const Friction                                  &f,
+        const std::array<std::vector<std::string>, dim> &fixed_names,
+        const Mesh::MeshGenerator<dim>                  &mesh);
+      /// The constrained DoFs of the owned cells (cell array index,
+      /// column, wall).
+      void
+      collect_entries(const State<dim> &state);
+      void
+      collect_prescribed_dofs();
+      /// Reactions, wall forces and the buffers of the sum over ranks.
+      void
+      allocate_results(const State<dim> &state);
+
+      /// The steps of after_acceleration().
+      void
+      apply_local_damping(State<dim> &state);
+      void
+      prescribe_acceleration(State<dim> &state);
+      void
+      compute_reactions(State<dim> &state);
+      void
+      sum_wall_normals(const State<dim> &state);
+      void
+      apply_friction(State<dim> &state);
+      void
+      add_prescribed_work(const double dt);
+
       bool                    report_reactions = false;
       std::vector<Friction>   friction;
       std::vector<Prescribed> prescribed;

@@ -92,6 +92,23 @@ namespace psmpm
       void
       setup_level(const unsigned int ny)
       {
+        make_mesh(ny);
+        make_constraints_and_sparsity();
+        assemble();
+        K_inverse.initialize(K);
+        u_static.reinit(dof_handler.n_dofs());
+        K_inverse.vmult(u_static, force);
+        constraints.distribute(u_static);
+        omega1 = std::sqrt(first_eigenvalue());
+        points.clear();
+        index.clear();
+      }
+
+      /// The n_x x @p ny mesh of the beam, refined around the clamped
+      /// corners, its DoFs, and its coarse cells by position (cells).
+      void
+      make_mesh(const unsigned int ny)
+      {
         const double L = prm.upper[0] - prm.lower[0],
                      H = prm.upper[1] - prm.lower[1];
         n_y            = ny;
@@ -129,7 +146,13 @@ namespace psmpm
               static_cast<unsigned int>((c[1] - prm.lower[1]) / h_y);
             cells[j * n_x + i] = cell;
           }
+      }
 
+      /// Hanging nodes and the clamped end x = lower[0]; the matrices
+      /// and the load vector sized.
+      void
+      make_constraints_and_sparsity()
+      {
         constraints.clear();
         DoFTools::make_hanging_node_constraints(dof_handler, constraints);
         VectorTools::interpolate_boundary_values(dof_handler,
@@ -147,7 +170,13 @@ namespace psmpm
         K.reinit(sparsity);
         M.reinit(sparsity);
         force.reinit(dof_handler.n_dofs());
+      }
 
+      /// Stiffness K, consistent mass M and the weight (force) of plane-
+      /// strain linear elasticity.
+      void
+      assemble()
+      {
         const QGauss<2>                  quadrature(3);
         FEValues<2>                      fv(fe,
                        quadrature,
@@ -185,14 +214,13 @@ namespace psmpm
             constraints.distribute_local_to_global(k, b, dofs, K, force);
             constraints.distribute_local_to_global(m, dofs, M);
           }
+      }
 
-        K_inverse.initialize(K);
-        u_static.reinit(dof_handler.n_dofs());
-        K_inverse.vmult(u_static, force);
-        constraints.distribute(u_static);
-
-        // Inverse iteration for the first eigenpair, from the static
-        // deflection (nearly the first mode).
+      /// Inverse iteration for the first eigenvalue of K x = lambda M x,
+      /// from the static deflection (nearly the first mode).
+      double
+      first_eigenvalue() const
+      {
         Vector<double> x(u_static), y(x.size()), z(x.size());
         double         eigenvalue = 0;
         for (unsigned int it = 0; it < 100; ++it)
@@ -211,9 +239,7 @@ namespace psmpm
             if (done)
               break;
           }
-        omega1 = std::sqrt(eigenvalue);
-        points.clear();
-        index.clear();
+        return eigenvalue;
       }
 
       void

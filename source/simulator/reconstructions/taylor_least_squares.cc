@@ -177,6 +177,25 @@ namespace psmpm
                      const Point<dim>  &x,
                      double            *psi) const;
 
+        /// The cells that share a vertex with each cell of @p tria
+        /// (neighbors, neighbor_start).
+        void
+        find_neighbors(const Triangulation<dim> &tria);
+
+        /// The affine map to the reference coordinates of owned @p cell
+        /// (origin, to_reference) and its measure; returns the cell's rule.
+        Quadrature<dim>
+        map_cell(const State<dim>                                        &state,
+                 const typename Triangulation<dim>::active_cell_iterator &cell);
+
+        /// The rule @p rule of owned cell @p c stored: weights, Taylor
+        /// functions, the space's values and gradients (the arrays sized
+        /// at the first cell).
+        void
+        store_rule(const State<dim>      &state,
+                   const unsigned int     c,
+                   const Quadrature<dim> &rule);
+
         void
         sort_particles(const State<dim> &state);
 
@@ -325,7 +344,23 @@ namespace psmpm
         origin.assign(n_cells, Point<dim>());
         to_reference.assign(n_cells, Tensor<2, dim>());
         measure.assign(n_cells, 0.);
+        find_neighbors(tria);
 
+        owned.reinit(tria, false);
+        n_q = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            store_rule(state, cell->active_cell_index(), map_cell(state, cell));
+        offsets.resize(n_cells + 1);
+        occupied.resize(n_cells);
+        interior.resize(n_cells);
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::find_neighbors(const Triangulation<dim> &tria)
+      {
         // Cells around each vertex, then around each cell.
         std::vector<std::vector<unsigned int>> at_vertex(tria.n_vertices());
         for (const auto &cell : tria.active_cell_iterators())
@@ -348,73 +383,79 @@ namespace psmpm
             neighbors.insert(neighbors.end(), around.begin(), around.end());
             neighbor_start.push_back(neighbors.size());
           }
+      }
 
-        owned.reinit(tria, false);
-        n_q = 0;
-        Quadrature<dim>           rule;
-        std::vector<unsigned int> cells;
-        for (const auto &cell : tria.active_cell_iterators())
+
+      template <int dim>
+      Quadrature<dim>
+      TaylorLeastSquares<dim>::map_cell(
+        const State<dim>                                        &state,
+        const typename Triangulation<dim>::active_cell_iterator &cell)
+      {
+        const unsigned int c = cell->active_cell_index();
+        measure[c]           = cell->measure();
+        Tensor<2, dim>  jacobian;
+        Quadrature<dim> rule;
+        if (dim == 1)
           {
-            if (!cell->is_locally_owned())
-              continue;
-            const unsigned int c = cell->active_cell_index();
-            measure[c]           = cell->measure();
-            Tensor<2, dim> jacobian;
-            if (dim == 1)
+            // xi = (x - centre) / (h / 2).
+            origin[c]      = cell->center();
+            jacobian[0][0] = (cell->vertex(1)[0] - cell->vertex(0)[0]) / 2;
+            const QGauss<dim>       gauss(state.space->degree() + 2);
+            std::vector<Point<dim>> points(gauss.size());
+            std::vector<double>     w(gauss.size());
+            for (unsigned int q = 0; q < gauss.size(); ++q)
               {
-                // xi = (x - centre) / (h / 2).
-                origin[c]      = cell->center();
-                jacobian[0][0] = (cell->vertex(1)[0] - cell->vertex(0)[0]) / 2;
-                const QGauss<dim>       gauss(state.space->degree() + 2);
-                std::vector<Point<dim>> points(gauss.size());
-                std::vector<double>     w(gauss.size());
-                for (unsigned int q = 0; q < gauss.size(); ++q)
-                  {
-                    points[q] =
-                      cell->vertex(0) +
-                      (cell->vertex(1) - cell->vertex(0)) * gauss.point(q)[0];
-                    w[q] = measure[c] * gauss.weight(q);
-                  }
-                rule = Quadrature<dim>(points, w);
+                points[q] =
+                  cell->vertex(0) +
+                  (cell->vertex(1) - cell->vertex(0)) * gauss.point(q)[0];
+                w[q] = measure[c] * gauss.weight(q);
               }
-            else
-              {
-                // (l1, l2) = J^-1 (x - v0), J = [v1 - v0, v2 - v0].
-                origin[c] = cell->vertex(0);
-                for (unsigned int d = 0; d < dim; ++d)
-                  for (unsigned int e = 0; e < dim; ++e)
-                    jacobian[e][d] =
-                      cell->vertex(d + 1)[e] - cell->vertex(0)[e];
-                rule = state.space->cell_quadrature(state.dof_handler, c);
-              }
-            to_reference[c] = invert(jacobian);
-            if (n_q == 0)
-              {
-                n_q                  = rule.size();
-                const unsigned int m = owned.size();
-                weights.assign(m * n_q, 0.);
-                q_psi.assign(m * n_q * n_max, 0.);
-                q_values.assign(m * n_q * n_dofs, 0.);
-                q_gradients.assign(m * n_q * n_dofs, Tensor<1, dim>());
-              }
-            AssertThrow(rule.size() == n_q,
-                        ExcMessage("TaylorLeastSquares: the cell rules of the "
-                                   "space differ in size."));
-            cells.assign(n_q, c);
-            state.space->evaluate(n_q,
-                                  cells.data(),
-                                  rule.get_points().data(),
-                                  &q_values[point(c, 0) * n_dofs],
-                                  &q_gradients[point(c, 0) * n_dofs]);
-            for (unsigned int q = 0; q < n_q; ++q)
-              {
-                weights[point(c, q)] = rule.weight(q);
-                taylor_basis(c, rule.point(q), &q_psi[point(c, q) * n_max]);
-              }
+            rule = Quadrature<dim>(points, w);
           }
-        offsets.resize(n_cells + 1);
-        occupied.resize(n_cells);
-        interior.resize(n_cells);
+        else
+          {
+            // (l1, l2) = J^-1 (x - v0), J = [v1 - v0, v2 - v0].
+            origin[c] = cell->vertex(0);
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int e = 0; e < dim; ++e)
+                jacobian[e][d] = cell->vertex(d + 1)[e] - cell->vertex(0)[e];
+            rule = state.space->cell_quadrature(state.dof_handler, c);
+          }
+        to_reference[c] = invert(jacobian);
+        return rule;
+      }
+
+
+      template <int dim>
+      void
+      TaylorLeastSquares<dim>::store_rule(const State<dim>      &state,
+                                          const unsigned int     c,
+                                          const Quadrature<dim> &rule)
+      {
+        if (n_q == 0)
+          {
+            n_q                  = rule.size();
+            const unsigned int m = owned.size();
+            weights.assign(m * n_q, 0.);
+            q_psi.assign(m * n_q * n_max, 0.);
+            q_values.assign(m * n_q * n_dofs, 0.);
+            q_gradients.assign(m * n_q * n_dofs, Tensor<1, dim>());
+          }
+        AssertThrow(rule.size() == n_q,
+                    ExcMessage("TaylorLeastSquares: the cell rules of the "
+                               "space differ in size."));
+        const std::vector<unsigned int> cells(n_q, c);
+        state.space->evaluate(n_q,
+                              cells.data(),
+                              rule.get_points().data(),
+                              &q_values[point(c, 0) * n_dofs],
+                              &q_gradients[point(c, 0) * n_dofs]);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            weights[point(c, q)] = rule.weight(q);
+            taylor_basis(c, rule.point(q), &q_psi[point(c, q) * n_max]);
+          }
       }
 
 
