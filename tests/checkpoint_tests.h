@@ -152,8 +152,8 @@ step_of(const std::string &f)
 
 /// Run @p scene uninterrupted and resumed from its second-last checkpoint
 /// (the run as a kill after it leaves it): statistics, .pvd series,
-/// tracked particle, final checkpoint and last particle output must be
-/// the same bit for bit. @p name prefixes the output directories.
+/// tracked particle, final checkpoint and last particle and grid outputs
+/// must be the same bit for bit. @p name prefixes the output directories.
 inline void
 check_resume(std::ostream            &out,
              const std::string       &name,
@@ -225,6 +225,13 @@ check_resume(std::ostream            &out,
   PSMPM_CHECK(out,
               without_date(read_file(a + vtu)) ==
                 without_date(read_file(b + vtu)));
+  // And the last grid output (nodal velocity, acceleration, mass).
+  const std::string grid =
+    "/grid-" + Utilities::int_to_string(last, 5) + ".000.vtu";
+  PSMPM_CHECK(out,
+              !read_file(a + grid).empty() &&
+                without_date(read_file(a + grid)) ==
+                  without_date(read_file(b + grid)));
 }
 
 

@@ -248,8 +248,49 @@ namespace psmpm
           for (unsigned int i = bucket_start[b]; i < bucket_start[b + 1]; ++i)
             if (contains(bucket_cells[i], p))
               return bucket_cells[i];
-          return invalid;
+          return nearest_within_round_off(p, b);
         }
+    }
+
+    template <int dim>
+    unsigned int
+    CellLocator<dim>::nearest_within_round_off(const Point<dim>  &p,
+                                               const unsigned int bucket) const
+    {
+      // lambda_k = constant_k + gradient_k . p loses the digits of
+      // |constant_k| ~ |p| / h: far from the origin, relative to the cell
+      // size h, a point at a vertex shared by several cells (the centre of
+      // a criss-cross block with an odd number of particles per block,
+      // 80 x 80 blocks of the unit square) can lie 1e-12 outside each of
+      // them. It belongs to the one it is least outside of if that is
+      // within this round-off. Reached only where the 1e-12 test found no
+      // cell, so every point found before keeps its cell.
+      unsigned int best       = invalid;
+      double       best_ratio = -1;
+      if constexpr (dim == 1)
+        (void)p, (void)bucket; // a line's map is relative to its vertices
+      else
+        for (unsigned int i = bucket_start[bucket];
+             i < bucket_start[bucket + 1];
+             ++i)
+          {
+            const unsigned int c     = bucket_cells[i];
+            const auto         l     = maps[c](p);
+            double             ratio = 0; // largest -lambda_k / its round-off
+            for (unsigned int k = 0; k <= dim; ++k)
+              {
+                double scale = 1 + std::abs(maps[c].constant[k]);
+                for (unsigned int d = 0; d < dim; ++d)
+                  scale += std::abs(maps[c].gradient[k][d] * p[d]);
+                ratio = std::max(ratio, -l[k] / (tolerance * scale));
+              }
+            if (ratio <= 1 && (best == invalid || ratio < best_ratio))
+              {
+                best       = c;
+                best_ratio = ratio;
+              }
+          }
+      return best;
     }
 
     template <int dim>

@@ -18,6 +18,17 @@ namespace psmpm
   {
     namespace
     {
+      /// "(x, y)" of a point, as in a parameter file.
+      template <int dim>
+      std::string
+      where(const Point<dim> &p)
+      {
+        std::string text = "(" + prm_value(p[0]);
+        for (unsigned int d = 1; d < dim; ++d)
+          text += ", " + prm_value(p[d]);
+        return text + ")";
+      }
+
       /// Add the particle @p id at @p x of a block mesh if it lies in a
       /// body and in a cell this rank owns. @p hint is the cell of the
       /// previous point (the points come in block order).
@@ -40,7 +51,9 @@ namespace psmpm
         const unsigned int c = locator.locate(x, hint);
         if (c == Mesh::CellLocator<dim>::invalid && partial)
           return; // in a part of the mesh this rank does not hold
-        AssertThrow(c != Mesh::CellLocator<dim>::invalid, ExcInternalError());
+        AssertThrow(c != Mesh::CellLocator<dim>::invalid,
+                    ExcMessage("The particle position " + where(x) +
+                               " lies in no cell of the mesh."));
         hint = c;
         if (is_owned(c))
           particles.add(id, c, x, volume, density[body], body);
@@ -145,6 +158,152 @@ namespace psmpm
                     }
                 }
           }
+      }
+
+      /// What the placement of particles needs besides the body of each
+      /// point: the layout, the mesh, the ranks' ownership and the set
+      /// that receives them.
+      template <int dim>
+      struct Placement
+      {
+        const ParticleGenerator<dim>            &generator;
+        const Mesh::MeshGenerator<dim>          &mesh;
+        const Triangulation<dim>                &tria;
+        const Mesh::CellLocator<dim>            &locator;
+        const std::function<bool(unsigned int)> &is_owned;
+        /// The distributed mesh of which this rank holds a part, or null.
+        const parallel::fullydistributed::Triangulation<dim> *par;
+        ParticleSet<dim>                                     &particles;
+
+        /// Add the candidate points of the mesh's layout (lines, blocks or
+        /// per cell) that @p classify puts in body b >= 0, with density
+        /// @p density[b].
+        template <typename Classify>
+        void
+        place(const std::vector<double> &density,
+              const Classify            &classify) const
+        {
+          // The block layouts' points come in block order: each one's
+          // cell is searched from the previous point's.
+          unsigned int hint = 0;
+          const auto   add  = [&](const std::uint64_t id,
+                               const Point<dim>   &x,
+                               const double        volume) {
+            add_block_particle(id,
+                               x,
+                               volume,
+                               locator,
+                               density,
+                               is_owned,
+                               classify,
+                               par != nullptr,
+                               hint,
+                               particles);
+          };
+          if constexpr (dim == 1)
+            {
+              generator.check_count(mesh);
+              generate_lines(generator, mesh, add);
+            }
+          else if (mesh.type != Mesh::MeshGenerator<dim>::Type::gmsh)
+            {
+              generator.check_count(mesh);
+              generate_blocks(generator, mesh, add);
+            }
+          else
+            generate_per_cell(generator,
+                              tria,
+                              density,
+                              is_owned,
+                              classify,
+                              particles);
+        }
+      };
+
+      /// The whole boundary of every body must lie in the mesh: a body cut
+      /// by the mesh boundary would silently lose material. The outline is
+      /// pulled towards the inside by a relative 1e-9 so that a body flush
+      /// with the mesh boundary is accepted.
+      void
+      check_bodies_inside_mesh(
+        const Bodies                                       &bodies,
+        const Mesh::CellLocator<2>                         &locator,
+        const parallel::fullydistributed::Triangulation<2> *par)
+      {
+        for (const Body &body : bodies.bodies)
+          {
+            const double h       = std::sqrt(body.shape.area()) / 64;
+            const auto   outline = body.shape.outline(h);
+            Point<2>     mean;
+            for (const auto &p : outline)
+              mean += p / double(outline.size());
+            // On a distributed mesh a point is inside if some rank holds
+            // its cell.
+            std::vector<unsigned int> inside(outline.size());
+            for (std::size_t i = 0; i < outline.size(); ++i)
+              inside[i] =
+                locator.locate(outline[i] + 1e-9 * (mean - outline[i])) !=
+                Mesh::CellLocator<2>::invalid;
+            if (par != nullptr)
+              Utilities::MPI::max(inside, par->get_communicator(), inside);
+            for (std::size_t i = 0; i < outline.size(); ++i)
+              AssertThrow(inside[i],
+                          ExcMessage(body.name() + " (" +
+                                     body.shape.description() +
+                                     ") reaches outside the mesh at " +
+                                     where(outline[i]) + "."));
+          }
+      }
+
+      /// Place the particles of the bodies (each point in the body whose
+      /// shape holds it, density its own or @p density) and refuse bodies
+      /// that overlap or hold no particle.
+      void
+      place_bodies(const Bodies       &bodies,
+                   const double        density,
+                   const Placement<2> &placement)
+      {
+        std::vector<double> densities{density};
+        for (const Body &body : bodies.bodies)
+          densities.push_back(body.density > 0 ? body.density : density);
+        // Counted over every candidate point, owned or not, so that all
+        // ranks reach the same verdict without communication.
+        std::vector<std::uint64_t> count(bodies.bodies.size() + 1, 0);
+        std::string                overlap;
+        placement.place(densities, [&](const Point<2> &p) {
+          int found = -1;
+          for (const Body &body : bodies.bodies)
+            if (body.shape.inside(p))
+              {
+                if (found < 0)
+                  found = body.number;
+                else if (overlap.empty())
+                  overlap = body.name() + " overlaps Bodies/Body " +
+                            std::to_string(found) +
+                            ": both contain the particle position " + where(p) +
+                            ".";
+              }
+          if (found > 0)
+            ++count[found];
+          return found;
+        });
+        // A distributed Gmsh mesh: each rank placed its part's points.
+        if (placement.par != nullptr &&
+            placement.mesh.type == Mesh::MeshGenerator<2>::Type::gmsh)
+          {
+            const MPI_Comm comm = placement.par->get_communicator();
+            for (const auto &o : Utilities::MPI::all_gather(comm, overlap))
+              if (overlap.empty())
+                overlap = o;
+            Utilities::MPI::sum(count, comm, count);
+          }
+        AssertThrow(overlap.empty(), ExcMessage(overlap));
+        for (const Body &body : bodies.bodies)
+          AssertThrow(count[body.number] > 0,
+                      ExcMessage(body.name() + " (" + body.shape.description() +
+                                 ") holds no particle: it is smaller than "
+                                 "the particle spacing or falls between "
+                                 "the particle positions."));
       }
     } // namespace
 
@@ -313,130 +472,27 @@ namespace psmpm
       const std::function<bool(unsigned int)> &is_owned,
       ParticleSet<dim>                        &particles) const
     {
-      // One placement for every scene: classify(x) says which body the
-      // candidate point x belongs to (0: the one material of a scene
-      // without Bodies) or -1 for none.
-      std::vector<double> densities{density};
       // A distributed mesh: this rank holds its cells and their ghost
       // layer only.
       const auto *par =
         dynamic_cast<const parallel::fullydistributed::Triangulation<dim> *>(
           &tria);
-      const bool partial = par != nullptr;
-      const auto place   = [&](const auto &classify) {
-        // The block layouts' points come in block order: each one's cell
-        // is searched from the previous point's.
-        unsigned int hint = 0;
-        const auto   add  = [&](const std::uint64_t id,
-                             const Point<dim>   &x,
-                             const double        volume) {
-          add_block_particle(id,
-                             x,
-                             volume,
-                             locator,
-                             densities,
-                             is_owned,
-                             classify,
-                             partial,
-                             hint,
-                             particles);
-        };
-        if constexpr (dim == 1)
-          {
-            (void)tria;
-            check_count(mesh);
-            generate_lines(*this, mesh, add);
-          }
-        else if (mesh.type != Mesh::MeshGenerator<dim>::Type::gmsh)
-          {
-            check_count(mesh);
-            generate_blocks(*this, mesh, add);
-          }
-        else
-          generate_per_cell(*this,
-                            tria,
-                            densities,
-                            is_owned,
-                            classify,
-                            particles);
-      };
+      // One placement for every scene: classify(x) says which body the
+      // candidate point x belongs to (0: the one material of a scene
+      // without Bodies) or -1 for none.
+      const Placement<dim>
+        placement{*this, mesh, tria, locator, is_owned, par, particles};
       if (bodies.empty())
         {
-          place([this](const Point<dim> &p) { return in_region(p) ? 0 : -1; });
+          placement.place({density}, [this](const Point<dim> &p) {
+            return in_region(p) ? 0 : -1;
+          });
           return;
         }
       if constexpr (dim == 2)
         {
-          const auto where = [](const Point<2> &p) {
-            return "(" + prm_value(p[0]) + ", " + prm_value(p[1]) + ")";
-          };
-          // The whole boundary must lie in the mesh: a body cut by the
-          // mesh boundary would silently lose material. The outline is
-          // pulled towards the inside by a relative 1e-9 so that a body
-          // flush with the mesh boundary is accepted.
-          for (const Body &body : bodies.bodies)
-            {
-              const double h       = std::sqrt(body.shape.area()) / 64;
-              const auto   outline = body.shape.outline(h);
-              Point<2>     mean;
-              for (const auto &p : outline)
-                mean += p / double(outline.size());
-              // On a distributed mesh a point is inside if some rank
-              // holds its cell.
-              std::vector<unsigned int> inside(outline.size());
-              for (std::size_t i = 0; i < outline.size(); ++i)
-                inside[i] =
-                  locator.locate(outline[i] + 1e-9 * (mean - outline[i])) !=
-                  Mesh::CellLocator<2>::invalid;
-              if (partial)
-                Utilities::MPI::max(inside, par->get_communicator(), inside);
-              for (std::size_t i = 0; i < outline.size(); ++i)
-                AssertThrow(inside[i],
-                            ExcMessage(body.name() + " (" +
-                                       body.shape.description() +
-                                       ") reaches outside the mesh at " +
-                                       where(outline[i]) + "."));
-            }
-          for (const Body &body : bodies.bodies)
-            densities.push_back(body.density > 0 ? body.density : density);
-          // Counted over every candidate point, owned or not, so that all
-          // ranks reach the same verdict without communication.
-          std::vector<std::uint64_t> count(bodies.bodies.size() + 1, 0);
-          std::string                overlap;
-          place([&](const Point<2> &p) {
-            int found = -1;
-            for (const Body &body : bodies.bodies)
-              if (body.shape.inside(p))
-                {
-                  if (found < 0)
-                    found = body.number;
-                  else if (overlap.empty())
-                    overlap = body.name() + " overlaps Bodies/Body " +
-                              std::to_string(found) +
-                              ": both contain the particle position " +
-                              where(p) + ".";
-                }
-            if (found > 0)
-              ++count[found];
-            return found;
-          });
-          // A distributed Gmsh mesh: each rank placed its part's points.
-          if (partial && mesh.type == Mesh::MeshGenerator<dim>::Type::gmsh)
-            {
-              const MPI_Comm comm = par->get_communicator();
-              for (const auto &o : Utilities::MPI::all_gather(comm, overlap))
-                if (overlap.empty())
-                  overlap = o;
-              Utilities::MPI::sum(count, comm, count);
-            }
-          AssertThrow(overlap.empty(), ExcMessage(overlap));
-          for (const Body &body : bodies.bodies)
-            AssertThrow(count[body.number] > 0,
-                        ExcMessage(body.name() + " (" +
-                                   body.shape.description() +
-                                   ") holds no particle: it is smaller than "
-                                   "the particle spacing or falls between "
-                                   "the particle positions."));
+          check_bodies_inside_mesh(bodies, locator, par);
+          place_bodies(bodies, density, placement);
           particles.n_bodies = bodies.bodies.size();
         }
     }

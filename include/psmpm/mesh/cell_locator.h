@@ -153,6 +153,11 @@ namespace psmpm
       bucket_of(const Point<dim> &p) const;
       unsigned int
       search(const Point<dim> &p) const;
+      /// 2D: the cell of @p bucket that @p p lies least outside of, if
+      /// only by the round-off of its barycentric map; else invalid.
+      unsigned int
+      nearest_within_round_off(const Point<dim>  &p,
+                               const unsigned int bucket) const;
     };
   } // namespace Mesh
 } // namespace psmpm

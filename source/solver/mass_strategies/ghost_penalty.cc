@@ -211,6 +211,7 @@ namespace psmpm
               for (const unsigned int l : f.dofs)
                 treated[l] = true;
             }
+          penalize_lone_cells(grid, fill.data(), sampled, treated);
           unsigned int n_treated = 0;
           const auto  &global    = grid.relevant_global_indices();
           for (unsigned int l = 0; l < treated.size(); ++l)
@@ -222,6 +223,94 @@ namespace psmpm
         }
 
       private:
+        struct Face;
+
+        /**
+         * A cell that holds particles while no cell sharing a vertex with
+         * it does (a single particle, a fragment of a body) gets no pair:
+         * nothing fixes its polynomial, and the particle mass matrix of
+         * fewer than three particles is singular on it (P1: rank one for
+         * one particle). The consistent solve then fails to converge, or
+         * makes up a velocity gradient that strains the lone particle. Such
+         * a cell gets gamma rho (1 - fill) int_c (u - P0 u)(v - P0 v), P0
+         * the mean over the cell: a free particle moves with its grid
+         * velocity constant over the cell, exactly as with lumped mass
+         * (constants are untouched: momentum kept). Decided from the
+         * particle fill of the cell and its vertex neighbours only, so the
+         * same on any number of ranks; no cell of a body whose every cell
+         * touches another one that holds particles is affected.
+         */
+        void
+        penalize_lone_cells(GridSystem<dim>   &grid,
+                            const double      *fill,
+                            const double      *sampled,
+                            std::vector<bool> &treated)
+        {
+          const double gamma = grid.strategy_parameters().stabilization;
+          const double rho   = grid.reference_density();
+          for (const unsigned int c : grid.owned_cells())
+            {
+              const double w = gamma * rho * (1. - sampled[c]);
+              if (!(fill[c] > 0 && w > 0))
+                continue;
+              bool alone = true;
+              for (const unsigned int k : neighbours[c])
+                alone = alone && !(fill[k] > 0);
+              if (!alone)
+                continue;
+              Face &f = lone_cell(grid, c);
+              if (f.generation != grid.sparsity_generation())
+                {
+                  grid.patch_slots(f.dofs.data(), f.dofs.size(), f.slots);
+                  f.generation = grid.sparsity_generation();
+                }
+              typename GridSystem<dim>::PatchBlock b;
+              b.dofs   = f.dofs.data();
+              b.n      = f.dofs.size();
+              b.values = &f.S(0, 0);
+              b.weight = w;
+              b.slots  = f.slots.empty() ? nullptr : f.slots.data();
+              grid.patch_blocks().push_back(b);
+              for (const unsigned int l : f.dofs)
+                treated[l] = true;
+            }
+        }
+
+        /// The patch of the lone cell @p c: its DoFs and the complement
+        /// of the constants on it (computed at its first use).
+        Face &
+        lone_cell(const GridSystem<dim> &grid, const unsigned int c)
+        {
+          Face &f = lone[c];
+          if (!f.dofs.empty())
+            return f;
+          const auto        &dh = grid.get_dof_handler();
+          const unsigned int n  = grid.dofs_per_cell;
+          for (const auto &cell : dh.active_cell_iterators())
+            if (cell->active_cell_index() == c)
+              {
+                std::vector<types::global_dof_index> dofs(n);
+                cell->get_dof_indices(dofs);
+                std::vector<unsigned int> identity(n);
+                for (unsigned int k = 0; k < n; ++k)
+                  {
+                    identity[k] = k;
+                    f.dofs.push_back(
+                      grid.relevant_dofs().index_within_set(dofs[k]));
+                  }
+                f.cells = {{c, c}};
+                f.S     = polynomial_complement(grid.get_space(),
+                                            dh,
+                                            {c},
+                                            {identity},
+                                            n,
+                                            0,
+                                            cell->center(),
+                                            cell->diameter());
+              }
+          return f;
+        }
+
         struct Face
         {
           std::array<unsigned int, 2> cells;
@@ -255,6 +344,13 @@ namespace psmpm
               for (const unsigned int b : around)
                 if (a < b)
                   pairs.emplace(a, b);
+          neighbours.assign(grid.n_cells, {});
+          lone.resize(grid.n_cells);
+          for (const auto &[a, b] : pairs)
+            {
+              neighbours[a].push_back(b);
+              neighbours[b].push_back(a);
+            }
           for (const auto &[a, b] : pairs)
             {
               {
@@ -303,6 +399,11 @@ namespace psmpm
 
         std::vector<Face>   faces;
         std::vector<double> measure;
+        /// The cells sharing a vertex with each cell.
+        std::vector<std::vector<unsigned int>> neighbours;
+        /// Patches of lone cells (penalize_lone_cells()), by cell; empty
+        /// until a cell is alone.
+        std::vector<Face> lone;
       };
     } // namespace
 
