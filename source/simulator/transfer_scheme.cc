@@ -8,6 +8,7 @@
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
+#include <psmpm/simulator/transfer_scheme.templates.h>
 #include <psmpm/solver/solver_failure.h>
 
 namespace psmpm
@@ -188,6 +189,57 @@ namespace psmpm
         }
     }
 
+    namespace
+    {
+      /// The particle loops of move_and_update_material() for
+      /// update_in_chunks(): the grid velocity moves the particles, and
+      /// their mass and forces go to the cell arrays (particles_to_grid()
+      /// with weights 0 and 1).
+      template <int dim, ParticleLoops::VelocityUpdate velocity_update>
+      struct GridVelocityKernels
+      {
+        static void
+        move(State<dim>       &state,
+             const std::size_t first,
+             const std::size_t last,
+             Tensor<2, dim>   *increments)
+        {
+          ParticleLoops::move_particles<dim, velocity_update>(state,
+                                                              first,
+                                                              last,
+                                                              increments);
+        }
+
+        /// A reconstruction maps mass and forces itself.
+        static bool
+        accumulates(const State<dim> &state)
+        {
+          return !state.reconstruction;
+        }
+
+        static void
+        start_cells(State<dim> &state)
+        {
+          state.grid->zero_cell_mass();
+          state.grid->zero_cell_rhs();
+        }
+
+        static void
+        add_to_cells(State<dim>       &state,
+                     const std::size_t first,
+                     const std::size_t last)
+        {
+          ParticleLoops::add_particles_to_cells(state, 0., 1., first, last);
+        }
+
+        static void
+        finish_cells(State<dim> &state)
+        {
+          ParticleLoops::finish_particles_to_cells(state);
+        }
+      };
+    } // namespace
+
     template <int dim>
     template <ParticleLoops::VelocityUpdate velocity_update>
     void
@@ -195,85 +247,8 @@ namespace psmpm
                                                   StabilityMonitor &monitor,
                                                   PhaseTimer       &timer)
     {
-      const std::size_t n = state.particles.size();
-      // A reconstruction maps mass and forces itself.
-      const bool accumulate = relocation != nullptr && !state.reconstruction;
-      PhaseTimer::Laps laps(timer);
-      if (relocation != nullptr)
-        relocation->begin(state);
-      if (accumulate)
-        {
-          state.grid->zero_cell_mass();
-          state.grid->zero_cell_rhs();
-          laps.lap("particle to grid");
-        }
-      for (std::size_t first = 0; first < n; first += chunk)
-        {
-          const std::size_t last = std::min(n, first + chunk);
-          ParticleLoops::move_particles<dim, velocity_update>(
-            state,
-            first,
-            last,
-            chunk_increments.data());
-          update_material(state,
-                          first,
-                          last,
-                          chunk_increments.data(),
-                          chunk_volume_ratio.data(),
-                          monitor);
-          if (chunk_observer != nullptr)
-            chunk_observer->updated(state, first, last);
-          laps.lap("update");
-          if (relocation == nullptr)
-            continue;
-          const bool some_left =
-            relocation->locate(state, monitor, first, last) > 0;
-          laps.lap("locate");
-          if (!accumulate)
-            continue;
-          add_forces_of_chunk(state, first, last, some_left);
-          laps.lap("particle to grid");
-        }
-      // Every rank enters every section (PhaseTimer), also a rank
-      // without particles.
-      laps.lap("update");
-      if (relocation == nullptr)
-        return;
-      const std::size_t received = relocation->finish(state);
-      relocated_now              = true;
-      laps.lap("locate");
-      if (!accumulate)
-        return;
-      ParticleLoops::add_particles_to_cells(state,
-                                            0.,
-                                            1.,
-                                            received,
-                                            state.particles.size());
-      ParticleLoops::finish_particles_to_cells(state);
-      state.forces_in_cells = true;
-      laps.lap("particle to grid");
-    }
-
-    template <int dim>
-    void
-    TransferScheme<dim>::add_forces_of_chunk(State<dim>       &state,
-                                             const std::size_t first,
-                                             const std::size_t last,
-                                             const bool        some_left) const
-    {
-      if (!some_left)
-        {
-          ParticleLoops::add_particles_to_cells(state, 0., 1., first, last);
-          return;
-        }
-      // The runs between the particles that left (their owner adds them).
-      std::size_t begin = first;
-      for (std::size_t p = first; p <= last; ++p)
-        if (p == last || relocation->leaving(p))
-          {
-            ParticleLoops::add_particles_to_cells(state, 0., 1., begin, p);
-            begin = p + 1;
-          }
+      GridVelocityKernels<dim, velocity_update> kernels;
+      update_in_chunks(state, monitor, timer, kernels);
     }
 
     template class TransferScheme<1>;

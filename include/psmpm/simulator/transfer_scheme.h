@@ -242,6 +242,27 @@ namespace psmpm
                                StabilityMonitor &monitor,
                                PhaseTimer       &timer);
 
+      /**
+       * The chunked pass of move_and_update_material() with a scheme's
+       * own particle loops (APIC: its velocities, affine matrices and
+       * momentum), @p kernels providing, for particles [first, last):
+       *  - move(state, first, last, increments): positions, velocities
+       *    and the strain increments (increments[p - first]);
+       *  - accumulates(state): whether the located particles go to the
+       *    cell arrays of the next step (State::forces_in_cells);
+       *  - start_cells(state), add_to_cells(state, first, last) and
+       *    finish_cells(state): zero those sums, add the located
+       *    particles [first, last) in particle order, complete them.
+       * A template (transfer_scheme.templates.h): the kernels are called
+       * per chunk, never per particle through a virtual function.
+       */
+      template <typename Kernels>
+      void
+      update_in_chunks(State<dim>       &state,
+                       StabilityMonitor &monitor,
+                       PhaseTimer       &timer,
+                       Kernels          &kernels);
+
     private:
       /// 16 kB of increments in 2D: a chunk fits the L1 cache.
       static constexpr std::size_t      chunk = 512;
@@ -251,14 +272,15 @@ namespace psmpm
       ParticleRelocation<dim>          *relocation     = nullptr;
       bool                              relocated_now  = false;
 
-      /// The mass and forces of the located particles [first, last) of
-      /// move_and_update_material() into the cell arrays, without those
-      /// that left this rank.
+      /// The located particles [first, last) of update_in_chunks() into
+      /// the cell arrays (@p kernels), without those that left this rank.
+      template <typename Kernels>
       void
-      add_forces_of_chunk(State<dim>       &state,
-                          const std::size_t first,
-                          const std::size_t last,
-                          const bool        some_left) const;
+      add_located_to_cells(State<dim>       &state,
+                           const std::size_t first,
+                           const std::size_t last,
+                           const bool        some_left,
+                           Kernels          &kernels) const;
     };
 
     template <int dim>

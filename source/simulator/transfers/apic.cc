@@ -4,8 +4,10 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/simulator/apic_particle_loops.h>
 #include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/transfer_scheme.h>
+#include <psmpm/simulator/transfer_scheme.templates.h>
 
 namespace psmpm
 {
@@ -13,13 +15,7 @@ namespace psmpm
   {
     namespace
     {
-      enum class AffineMatrix
-      {
-        control_points,
-        velocity_gradient,
-        rotation,
-        none
-      };
+      using ApicLoops::AffineMatrix;
 
       /**
        * Affine particle-in-cell (Jiang et al. 2015) for any space, with the
@@ -176,43 +172,90 @@ namespace psmpm
           setup(state);
           {
             PhaseTimer::Scope t(timer, "particle to grid");
-            mass_to_grid(state);
-            affine_momentum_to_grid(state);
+            // The last step's update summed the particles as they are now
+            // (State::forces_in_cells); else one pass here.
+            if (!state.forces_in_cells)
+              {
+                start_cells(state);
+                add_to_cells(state, 0, state.particles.size());
+              }
+            state.forces_in_cells = false;
+            assemble_mass(state);
+            finish_momentum(state);
           }
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           if (xpic_order > 1 && !xpic_correction(state, monitor, timer))
             return false;
-          forces_to_grid(state, timer);
+          state.grid->cell_arrays().rhs.swap(forces);
           if (!this->solve(state, state.grid_acceleration, monitor, timer))
             return false;
-          if (state.boundary_conditions)
-            state.boundary_conditions->after_acceleration(state);
-          for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
-            state.grid_velocity[l] += state.dt * state.grid_acceleration[l];
-          if (state.boundary_conditions)
-            state.boundary_conditions->impose_velocity(state);
-          if (xpic_order > 1)
-            {
-              for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
-                state.grid_velocity[l] += correction[l];
-              if (state.boundary_conditions)
-                state.boundary_conditions->impose_velocity(state);
-            }
-          velocities_to_particles(state, timer);
+          advance_grid_velocity(state);
           {
-            PhaseTimer::Scope t(timer, "particle to grid");
-            affine_momentum_to_grid(state);
+            PhaseTimer::Scope t(timer, "grid to particle");
+            accelerate_particles(state);
           }
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           if (state.boundary_conditions)
             state.boundary_conditions->impose_velocity(state);
-          update_particle_state(state, monitor, timer);
+          // Move, material update, locate and the next step's sums, chunk
+          // by chunk.
+          Kernels kernels{*this};
+          this->update_in_chunks(state, monitor, timer, kernels);
           return true;
         }
 
       private:
+        /// The particle loops of update_in_chunks().
+        struct Kernels
+        {
+          APIC &apic;
+
+          void
+          move(State<dim>       &state,
+               const std::size_t first,
+               const std::size_t last,
+               Tensor<2, dim>   *increments) const
+          {
+            const ApicLoops::Move options{apic.move_with_grid,
+                                          apic.mode ==
+                                            AffineMatrix::velocity_gradient,
+                                          apic.mode == AffineMatrix::rotation};
+            ApicLoops::move(state,
+                            apic.grid_view(state),
+                            options,
+                            first,
+                            last,
+                            increments);
+          }
+
+          static bool
+          accumulates(const State<dim> &)
+          {
+            return true;
+          }
+
+          void
+          start_cells(State<dim> &state) const
+          {
+            apic.start_cells(state);
+          }
+
+          void
+          add_to_cells(State<dim>       &state,
+                       const std::size_t first,
+                       const std::size_t last) const
+          {
+            apic.add_to_cells(state, first, last);
+          }
+
+          static void
+          finish_cells(State<dim> &)
+          {
+          }
+        };
+
         /// Control points in local relevant numbering (they depend only on
         /// the mesh and the DoF numbering) and the mode.
         void
@@ -237,38 +280,53 @@ namespace psmpm
             control_points[l] = all[global[l]];
         }
 
-        /// Per-cell particle mass (lumped and, for matrix strategies,
-        /// consistent), then the strategy; Delta = its change of the cell
-        /// matrices.
+        ApicLoops::Grid<dim>
+        grid_view(const State<dim> &state) const
+        {
+          return {control_points.data(), state.grid->cell_dofs().data()};
+        }
+
+        /// Zero the sums of the start of a step: mass (cell arrays),
+        /// affine momentum, consistent momentum (cell right-hand sides)
+        /// and forces.
         void
-        mass_to_grid(State<dim> &state)
+        start_cells(State<dim> &state)
         {
           auto &grid = *state.grid;
           grid.zero_cell_mass();
-          const auto        &particles  = state.particles;
-          const unsigned int n          = grid.dofs_per_cell;
-          auto              &cells      = grid.cell_arrays();
-          const bool         consistent = !cells.mass.empty();
-          double            *lumped     = cells.lumped.data();
-          double            *mass_mat   = cells.mass.data();
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int base = particles.cell[p] * n;
-              const double       m    = particles.mass[p];
-              const double      *phi  = &state.shape_values[p * n];
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  const double mk = m * phi[k];
-                  lumped[base + k] += mk;
-                  if (consistent)
-                    {
-                      double *row = mass_mat + (base + k) * n;
-                      for (unsigned int l = 0; l < n; ++l)
-                        row[l] += mk * phi[l];
-                    }
-                }
-            }
-          particle_mass = cells.lumped;
+          grid.zero_cell_rhs();
+          const std::size_t size = grid.cell_arrays().rhs.size();
+          affine_momentum.assign(size, Tensor<1, dim>());
+          forces.assign(size, Tensor<1, dim>());
+        }
+
+        /// The particles [@p first, @p last) into those sums.
+        void
+        add_to_cells(State<dim>       &state,
+                     const std::size_t first,
+                     const std::size_t last)
+        {
+          auto                          &cells      = state.grid->cell_arrays();
+          const bool                     consistent = !cells.mass.empty();
+          const ApicLoops::CellSums<dim> sums{cells.lumped.data(),
+                                              consistent ? cells.mass.data() :
+                                                           nullptr,
+                                              affine_momentum.data(),
+                                              consistent ? cells.rhs.data() :
+                                                           nullptr,
+                                              forces.data()};
+          ApicLoops::add_to_cells(state, grid_view(state), sums, first, last);
+        }
+
+        /// The strategy's mass from the particle mass in the cell arrays;
+        /// Delta = its change of the cell matrices.
+        void
+        assemble_mass(State<dim> &state)
+        {
+          auto      &grid       = *state.grid;
+          auto      &cells      = grid.cell_arrays();
+          const bool consistent = !cells.mass.empty();
+          particle_mass         = cells.lumped;
           if (consistent)
             delta = cells.mass;
           grid.assemble_mass();
@@ -277,61 +335,31 @@ namespace psmpm
               delta[i] = cells.mass[i] - delta[i];
         }
 
-        /// The grid momentum of the particles' affine fields into the cell
-        /// right-hand sides (see the class documentation).
+        /// Zero the momentum sums of a projection.
         void
-        affine_momentum_to_grid(State<dim> &state)
+        start_momentum(State<dim> &state)
         {
-          const auto &particles = state.particles;
-          affine_momentum_to_grid(state,
-                                  [&](const std::size_t p,
-                                      Tensor<1, dim>   &v,
-                                      Tensor<2, dim>   &C) {
-                                    v = particles.velocity[p];
-                                    C = particles.affine[p];
-                                  });
+          state.grid->zero_cell_rhs();
+          affine_momentum.assign(state.grid->cell_arrays().rhs.size(),
+                                 Tensor<1, dim>());
         }
 
-        /// The same for the affine fields that @p field(p, v, C) gives at
-        /// the particles' positions (a template: the loop calls no
-        /// function per particle).
-        template <typename AffineField>
+        /// The grid momentum of the particles' affine fields into the cell
+        /// right-hand sides (see the class documentation) from the sums
+        /// of a projection: q_k with lumped mass, else the consistent
+        /// momentum plus Delta u per cell, u_k = q_k / w_k.
         void
-        affine_momentum_to_grid(State<dim> &state, const AffineField &field)
+        finish_momentum(State<dim> &state)
         {
-          auto &grid = *state.grid;
-          grid.zero_cell_rhs();
-          const auto         &particles  = state.particles;
-          const unsigned int  n          = grid.dofs_per_cell;
-          const unsigned int *dofs       = grid.cell_dofs().data();
-          auto               &cells      = grid.cell_arrays();
-          const bool          consistent = !cells.mass.empty();
-          Tensor<1, dim>     *rhs        = cells.rhs.data();
-          affine_momentum.assign(cells.rhs.size(), Tensor<1, dim>());
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int base = particles.cell[p] * n;
-              const double       m    = particles.mass[p];
-              const Point<dim>  &x    = particles.position[p];
-              Tensor<1, dim>     v;
-              Tensor<2, dim>     C;
-              field(p, v, C);
-              const double *phi = &state.shape_values[p * n];
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  const double mk = m * phi[k];
-                  affine_momentum[base + k] +=
-                    mk * (v + C * (control_points[dofs[base + k]] - x));
-                  if (consistent)
-                    rhs[base + k] += mk * v;
-                }
-            }
-          if (!consistent)
+          auto              &grid  = *state.grid;
+          auto              &cells = grid.cell_arrays();
+          const unsigned int n     = grid.dofs_per_cell;
+          if (cells.mass.empty())
             {
               cells.rhs.swap(affine_momentum);
               return;
             }
-          // rhs += Delta u per cell, u_k = q_k / w_k.
+          Tensor<1, dim> *rhs = cells.rhs.data();
           for (const unsigned int c : grid.owned_cells())
             {
               const unsigned int base = c * n;
@@ -346,6 +374,41 @@ namespace psmpm
                         rhs[base + k] += D[k * n + l] * u;
                   }
             }
+        }
+
+        /// The grid momentum of the affine fields that @p field(p, v, C)
+        /// gives at the particles' positions (a template: the loop calls
+        /// no function per particle).
+        template <typename AffineField>
+        void
+        affine_momentum_to_grid(State<dim> &state, const AffineField &field)
+        {
+          start_momentum(state);
+          const auto                    &particles  = state.particles;
+          auto                          &cells      = state.grid->cell_arrays();
+          const bool                     consistent = !cells.mass.empty();
+          const ApicLoops::CellSums<dim> sums{nullptr,
+                                              nullptr,
+                                              affine_momentum.data(),
+                                              consistent ? cells.rhs.data() :
+                                                           nullptr,
+                                              nullptr};
+          const ApicLoops::Grid<dim>     grid = grid_view(state);
+          const unsigned int             n    = state.grid->dofs_per_cell;
+          for (std::size_t p = 0; p < particles.size(); ++p)
+            {
+              Tensor<1, dim> v;
+              Tensor<2, dim> C;
+              field(p, v, C);
+              ApicLoops::add_momentum<dim, false>(state,
+                                                  grid,
+                                                  sums,
+                                                  p,
+                                                  n,
+                                                  v,
+                                                  C);
+            }
+          finish_momentum(state);
         }
 
         /**
@@ -427,195 +490,80 @@ namespace psmpm
               B += phi[k] * outer_product(vk, r);
               D += phi[k] * symmetrize(outer_product(r, r));
             }
-          C =
-            affine_matrix(B,
-                          D,
-                          keep_affine ? particles.affine[p] : Tensor<2, dim>());
+          C = ApicLoops::affine_matrix(B,
+                                       D,
+                                       keep_affine ? particles.affine[p] :
+                                                     Tensor<2, dim>());
         }
 
-        static void
-        forces_to_grid(State<dim> &state, PhaseTimer &timer)
+        /// v^{n+1} = v^n + dt a on the grid, with the boundary conditions
+        /// and the XPIC correction.
+        void
+        advance_grid_velocity(State<dim> &state) const
         {
-          PhaseTimer::Scope t(timer, "particle to grid");
-          auto             &grid = *state.grid;
-          grid.zero_cell_rhs();
-          const auto     &particles = state.particles;
-          const unsigned  n         = grid.dofs_per_cell;
-          Tensor<1, dim> *rhs       = grid.cell_arrays().rhs.data();
-          for (std::size_t p = 0; p < particles.size(); ++p)
+          if (state.boundary_conditions)
+            state.boundary_conditions->after_acceleration(state);
+          for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
+            state.grid_velocity[l] += state.dt * state.grid_acceleration[l];
+          if (state.boundary_conditions)
+            state.boundary_conditions->impose_velocity(state);
+          if (xpic_order > 1)
             {
-              const unsigned int             base = particles.cell[p] * n;
-              const double                   V    = particles.volume[p];
-              const SymmetricTensor<2, dim> &s    = particles.stress[p];
-              const Tensor<1, dim> external = particles.mass[p] * state.gravity;
-              const double        *phi      = &state.shape_values[p * n];
-              const Tensor<1, dim> *grad =
-                state.gradients(p, particles.cell[p]);
-              for (unsigned int k = 0; k < n; ++k)
-                rhs[base + k] += phi[k] * external - V * (s * grad[k]);
+              for (std::size_t l = 0; l < state.grid_velocity.size(); ++l)
+                state.grid_velocity[l] += correction[l];
+              if (state.boundary_conditions)
+                state.boundary_conditions->impose_velocity(state);
             }
         }
 
-        /// C = B D^{-1} on the eigendirections of D with support (relative
-        /// to its trace: scale-free), the old C on the others. Closed form
-        /// (no iterative eigensolver that could throw on a non-finite D of
-        /// a run going unstable: NaN passes to the stability monitor).
-        static Tensor<2, dim>
-        affine_matrix(const Tensor<2, dim>          &B,
-                      const SymmetricTensor<2, dim> &D,
-                      const Tensor<2, dim>          &C_old)
+        /// The particles' new velocities and affine matrices and, in the
+        /// same pass, the grid momentum of their new affine fields.
+        void
+        accelerate_particles(State<dim> &state)
         {
-          const double scale = trace(D);
-          if (!(scale > 0))
-            return C_old;
-          Tensor<2, dim> C;
-          if constexpr (dim == 1)
-            C[0][0] = B[0][0] / D[0][0];
+          start_momentum(state);
+          auto                          &cells      = state.grid->cell_arrays();
+          const bool                     consistent = !cells.mass.empty();
+          const ApicLoops::CellSums<dim> sums{nullptr,
+                                              nullptr,
+                                              affine_momentum.data(),
+                                              consistent ? cells.rhs.data() :
+                                                           nullptr,
+                                              nullptr};
+          const bool fit  = mode == AffineMatrix::control_points;
+          const bool flip = flip_fraction > 0;
+          const auto run  = [&](const auto fit_c, const auto flip_c) {
+            const ApicLoops::
+              Update<dim, decltype(fit_c)::value, decltype(flip_c)::value>
+                update{flip_fraction,
+                       fit && flip_affine && flip,
+                       state.dt,
+                       mode == AffineMatrix::none};
+            ApicLoops::accelerate(state, grid_view(state), update, sums);
+          };
+          using Yes = std::true_type;
+          using No  = std::false_type;
+          if (fit && flip)
+            run(Yes(), Yes());
+          else if (fit)
+            run(Yes(), No());
+          else if (flip)
+            run(No(), Yes());
           else
-            {
-              const double a = D[0][0], b = D[0][1], c = D[1][1];
-              const double mean = 0.5 * (a + c);
-              // |(0.5 (a - c), b)| relative to the trace, so that no
-              // square can overflow or underflow: std::hypot does the same
-              // scaling per call at several times the cost (3.5 % of the
-              // free Powell-Sabin throughput bar, perf).
-              const double inverse = 1. / scale;
-              const double p = 0.5 * (a - c) * inverse, q = b * inverse;
-              const double r = scale * std::sqrt(p * p + q * q);
-              Tensor<1, 2> e1;
-              if (std::abs(a - c) + std::abs(b) <= 1e-14 * scale)
-                e1[0] = 1; // D = lambda I
-              else if (a >= c)
-                e1[0] = mean + r - c, e1[1] = b;
-              else
-                e1[0] = b, e1[1] = mean + r - a;
-              e1 /= e1.norm();
-              const Tensor<1, 2> e2({-e1[1], e1[0]});
-              for (const auto &[lambda, e] :
-                   {std::make_pair(mean + r, e1), std::make_pair(mean - r, e2)})
-                {
-                  const Tensor<1, 2> Ce =
-                    lambda > 1e-3 * scale ? (B * e) / lambda : C_old * e;
-                  C += outer_product(Ce, e);
-                }
-            }
-          return C;
-        }
-
-        void
-        velocities_to_particles(State<dim> &state, PhaseTimer &timer) const
-        {
-          PhaseTimer::Scope   t(timer, "grid to particle");
-          auto               &particles = state.particles;
-          const unsigned int  n         = state.grid->dofs_per_cell;
-          const unsigned int *dofs      = state.grid->cell_dofs().data();
-          const bool          fit       = mode == AffineMatrix::control_points;
-          const bool affine_increment = fit && flip_affine && flip_fraction > 0;
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int      base = particles.cell[p] * n;
-              const Point<dim>       &x    = particles.position[p];
-              const double           *phi  = &state.shape_values[p * n];
-              Tensor<1, dim>          v;
-              Tensor<2, dim>          B, B_increment;
-              SymmetricTensor<2, dim> D;
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  const unsigned int    l  = dofs[base + k];
-                  const Tensor<1, dim> &vk = state.grid_velocity[l];
-                  v += phi[k] * vk;
-                  if (fit)
-                    {
-                      const Tensor<1, dim> r = control_points[l] - x;
-                      B += phi[k] * outer_product(vk, r);
-                      D += phi[k] * symmetrize(outer_product(r, r));
-                      if (affine_increment)
-                        B_increment +=
-                          phi[k] * outer_product(state.grid_acceleration[l], r);
-                    }
-                }
-              if (flip_fraction > 0)
-                {
-                  Tensor<1, dim> a;
-                  for (unsigned int k = 0; k < n; ++k)
-                    a += phi[k] * state.grid_acceleration[dofs[base + k]];
-                  particles.velocity[p] =
-                    (1 - flip_fraction) * v +
-                    flip_fraction * (particles.velocity[p] + state.dt * a);
-                }
-              else
-                particles.velocity[p] = v;
-              if (affine_increment)
-                particles.affine[p] =
-                  (1 - flip_fraction) *
-                    affine_matrix(B, D, particles.affine[p]) +
-                  flip_fraction *
-                    (particles.affine[p] +
-                     state.dt *
-                       affine_matrix(B_increment, D, Tensor<2, dim>()));
-              else if (fit)
-                particles.affine[p] = affine_matrix(B, D, particles.affine[p]);
-              else if (mode == AffineMatrix::none)
-                particles.affine[p] = Tensor<2, dim>();
-            }
-        }
-
-        /// Stress from the gradient of the projected field, positions with
-        /// v_p, and, for the velocity-gradient mode, the new C_p.
-        void
-        update_particle_state(State<dim>       &state,
-                              StabilityMonitor &monitor,
-                              PhaseTimer       &timer)
-        {
-          PhaseTimer::Scope   t(timer, "update");
-          auto               &particles = state.particles;
-          const unsigned int  n         = state.grid->dofs_per_cell;
-          const unsigned int *dofs      = state.grid->cell_dofs().data();
-          const double        dt        = state.dt;
-          const bool gradient = mode == AffineMatrix::velocity_gradient;
-          const bool rotation = mode == AffineMatrix::rotation;
-          Particles::resize_per_particle(increments, particles);
-          for (std::size_t p = 0; p < particles.size(); ++p)
-            {
-              const unsigned int    base = particles.cell[p] * n;
-              const Tensor<1, dim> *grad =
-                state.gradients(p, particles.cell[p]);
-              Tensor<2, dim> L; // L_ij = dv_i/dx_j
-              for (unsigned int k = 0; k < n; ++k)
-                L +=
-                  outer_product(state.grid_velocity[dofs[base + k]], grad[k]);
-              Tensor<1, dim> velocity = particles.velocity[p];
-              if (move_with_grid)
-                {
-                  const double *phi = &state.shape_values[p * n];
-                  velocity          = Tensor<1, dim>();
-                  for (unsigned int k = 0; k < n; ++k)
-                    velocity += phi[k] * state.grid_velocity[dofs[base + k]];
-                }
-              if (gradient)
-                particles.affine[p] = L;
-              else if (rotation)
-                particles.affine[p] = 0.5 * (L - transpose(L));
-              increments[p]           = dt * L;
-              const Tensor<1, dim> du = dt * velocity;
-              particles.displacement[p] += du;
-              particles.position[p] += du;
-            }
-          this->update_material(state, increments, volume_ratio, monitor);
+            run(No(), No());
+          finish_momentum(state);
         }
 
         std::string             matrix_choice;
         double                  flip_fraction = 0;
         bool                    flip_affine   = false;
         AffineMatrix            mode          = AffineMatrix::control_points;
-        bool                    flip          = false; ///< FLIP velocity update
         std::vector<Point<dim>> control_points; ///< local relevant numbering
         // Per-step arrays, kept to avoid reallocation.
         std::vector<double>         particle_mass; ///< w_k per cell DoF
         std::vector<double>         delta; ///< strategy's change, per cell
         std::vector<Tensor<1, dim>> affine_momentum; ///< q_k per cell DoF
-        std::vector<Tensor<2, dim>> increments;
-        std::vector<double>         volume_ratio;
+        std::vector<Tensor<1, dim>> forces;          ///< f_k per cell DoF
         // XPIC(m): grid fields in local relevant numbering.
         unsigned int                xpic_order     = 1;
         bool                        move_with_grid = false;
