@@ -33,6 +33,49 @@ namespace psmpm
                          create_drucker_prager<2>,
                          DruckerPrager<2>::declare_entries});
 
+      /// The return of the principal stresses @p sigma (any order) onto
+      /// the cone of the prepared @p s; false if they are inside it.
+      /// Inline in the particle loop, without a division: a yielding
+      /// particle's update is a chain of dependent operations whose
+      /// latency is its cost.
+      template <typename Strength>
+      DEAL_II_ALWAYS_INLINE inline bool
+      return_to_cone(const Strength &s, std::array<double, 3> &sigma)
+      {
+        const double eta = s.derived[0], xi_c = s.derived[1],
+                     eta_bar = s.derived[2];
+        const double p       = (sigma[0] + sigma[1] + sigma[2]) * (1. / 3);
+        const std::array<double, 3> dev = {
+          {sigma[0] - p, sigma[1] - p, sigma[2] - p}};
+        const double q = std::sqrt(
+          0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]));
+        const double f = q + eta * p - xi_c;
+        if (f <= 0)
+          return false;
+        const double G     = s.derived[3];
+        const double K     = s.derived[4];
+        const double gamma = f * s.derived[5];
+        if (q - G * gamma >= 0 && q > 0)
+          {
+            // Onto the cone: the deviator shrinks radially, the mean stress
+            // moves by the potential's dilatancy.
+            const double factor = 1 - G * gamma / q;
+            const double p_new  = p - K * eta_bar * gamma;
+            for (unsigned int d = 0; d < 3; ++d)
+              sigma[d] = factor * dev[d] + p_new;
+          }
+        else
+          {
+            // Past the apex (eta > 0 here: for eta = 0, q - G gamma = xi c
+            // >= 0): the stress is the apex.
+            const double apex = xi_c / eta;
+            sigma             = {{apex, apex, apex}};
+          }
+        return true;
+      }
+
+
+
       template <int dim>
       struct DruckerPragerReturn
       {
@@ -76,7 +119,7 @@ namespace psmpm
         operator()(const typename PlasticHypoelastic<dim>::Strength &s,
                    std::array<double, 3> &sigma) const
         {
-          return model.return_stress(s, sigma);
+          return return_to_cone(s, sigma);
         }
       };
 
@@ -145,6 +188,9 @@ namespace psmpm
       s.derived[0]         = eta;
       s.derived[1]         = xi * s.cohesion;
       s.derived[2]         = cone(fit, s.sin_psi, cos_psi).first;
+      s.derived[3]         = this->shear_modulus();
+      s.derived[4]         = this->bulk_modulus();
+      s.derived[5] = 1 / (s.derived[3] + s.derived[4] * eta * s.derived[2]);
     }
 
 
@@ -155,36 +201,7 @@ namespace psmpm
       const typename PlasticHypoelastic<dim>::Strength &s,
       std::array<double, 3>                            &sigma) const
     {
-      const double eta = s.derived[0], xi_c = s.derived[1],
-                   eta_bar            = s.derived[2];
-      const double                p   = (sigma[0] + sigma[1] + sigma[2]) / 3;
-      const std::array<double, 3> dev = {
-        {sigma[0] - p, sigma[1] - p, sigma[2] - p}};
-      const double q =
-        std::sqrt(0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]));
-      const double f = q + eta * p - xi_c;
-      if (f <= 0)
-        return false;
-      const double G     = this->shear_modulus();
-      const double K     = this->bulk_modulus();
-      const double gamma = f / (G + K * eta * eta_bar);
-      if (q - G * gamma >= 0 && q > 0)
-        {
-          // Onto the cone: the deviator shrinks radially, the mean stress
-          // moves by the potential's dilatancy.
-          const double factor = 1 - G * gamma / q;
-          const double p_new  = p - K * eta_bar * gamma;
-          for (unsigned int d = 0; d < 3; ++d)
-            sigma[d] = factor * dev[d] + p_new;
-        }
-      else
-        {
-          // Past the apex (eta > 0 here: for eta = 0, q - G gamma = xi c
-          // >= 0): the stress is the apex.
-          const double apex = xi_c / eta;
-          sigma             = {{apex, apex, apex}};
-        }
-      return true;
+      return return_to_cone(s, sigma);
     }
 
 

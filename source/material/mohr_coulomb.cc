@@ -98,62 +98,6 @@ namespace psmpm
         return std::max((1 + sin_phi) * s1 - (1 - sin_phi) * s3 - k, s1 - t);
       }
 
-      template <int dim>
-      struct MohrCoulombReturn
-      {
-        const MohrCoulomb<dim> &model;
-
-        void
-        prepare(typename PlasticHypoelastic<dim>::Strength &s) const
-        {
-          s.derived[0] = 2 * s.cohesion * s.cos_phi;
-        }
-
-        /// The elastic test: sigma_1 and sigma_3 by max/min, no sort.
-        bool
-        inside(const typename PlasticHypoelastic<dim>::Strength &s,
-               const std::array<double, 3>                      &sigma) const
-        {
-          const double s1 = std::max(std::max(sigma[0], sigma[1]), sigma[2]);
-          const double s3 = std::min(std::min(sigma[0], sigma[1]), sigma[2]);
-          return (1 + s.sin_phi) * s1 - (1 - s.sin_phi) * s3 - s.derived[0] <=
-                   0 &&
-                 s1 <= s.tension_cutoff;
-        }
-
-        /// The elastic test of a plane-strain stress from the centre c
-        /// and squared radius r^2 of its in-plane Mohr circle and sigma_zz
-        /// = z, without the square root: by where z lies against c -+ r,
-        /// f <= 0 is alpha r <= beta with alpha >= 0.
-        bool
-        inside_plane(const typename PlasticHypoelastic<dim>::Strength &s,
-                     const double                                      c,
-                     const double                                      r2,
-                     const double                                      z) const
-        {
-          const double sp = s.sin_phi, k = s.derived[0], t = s.tension_cutoff;
-          const auto   at_most = [r2](const double alpha, const double beta) {
-            return beta >= 0 && alpha * alpha * r2 <= beta * beta;
-          };
-          const double dz = z - c;
-          bool         inside;
-          if (dz >= 0 && dz * dz >= r2) // z = sigma_1
-            inside = at_most(1 - sp, k + (1 - sp) * c - (1 + sp) * z);
-          else if (dz <= 0 && dz * dz >= r2) // z = sigma_3
-            inside = at_most(1 + sp, k + (1 - sp) * z - (1 + sp) * c);
-          else
-            inside = at_most(2, k - 2 * sp * c);
-          return inside && z <= t && at_most(1, t - c);
-        }
-
-        bool
-        operator()(const typename PlasticHypoelastic<dim>::Strength &s,
-                   std::array<double, 3> &sigma) const
-        {
-          return model.return_stress(s, sigma);
-        }
-      };
-
       /// The active sets over @p n_planes planes (3 or 6) as bit masks:
       /// those with the main plane (bit 0) first, then the others, each by
       /// size (1 to 3) and then by number; without the main plane alone,
@@ -176,6 +120,24 @@ namespace psmpm
         unsigned int n_masks = 0;
       };
 
+      /// Where MohrCoulomb::prepare() puts the constants of the return in
+      /// Strength::derived (once per batch, or per softened particle, so
+      /// that a yielding particle divides by nothing): k = 2 c cos phi, the
+      /// Lame constants, the main plane's D b and 1 / (a . D b), and per
+      /// edge e = 1, 2 (at edge_block + edge_size (e - 1)) the D b of its
+      /// second plane, the matrix a_i . D b_j of the two planes (row-wise)
+      /// and the inverse of its determinant (0: singular, no edge return).
+      enum DerivedIndex : unsigned int
+      {
+        k_index      = 0,
+        lambda_index = 1,
+        two_g_index  = 2,
+        main_db      = 3,
+        main_inverse = 6,
+        edge_block   = 7,
+        edge_size    = 8,
+      };
+
       /// The constants of one return: sin phi, sin psi, k = 2 c cos phi,
       /// the cutoff t, the cohesion c and the Lame constants.
       struct ReturnConstants
@@ -183,43 +145,66 @@ namespace psmpm
         double sp, ss, k, t, cohesion, lambda, two_g;
       };
 
+      template <typename Strength>
+      ReturnConstants
+      return_constants(const Strength &s)
+      {
+        return {s.sin_phi,
+                s.sin_psi,
+                s.derived[k_index],
+                s.tension_cutoff,
+                s.cohesion,
+                s.derived[lambda_index],
+                s.derived[two_g_index]};
+      }
+
       /// Whether the returned stress @p y violates no plane by more than
       /// round-off relative to the result.
       DEAL_II_ALWAYS_INLINE inline bool
+      acceptable(const std::array<double, 3> &y,
+                 const double                 sp,
+                 const double                 k,
+                 const double                 t,
+                 const double                 cohesion)
+      {
+        return violation(y, sp, k, t) <=
+               1e-13 *
+                 (std::abs(y[0]) + std::abs(y[1]) + std::abs(y[2]) + cohesion);
+      }
+
+      DEAL_II_ALWAYS_INLINE inline bool
       acceptable(const std::array<double, 3> &y, const ReturnConstants &c)
       {
-        return violation(y, c.sp, c.k, c.t) <=
-               1e-13 * (std::abs(y[0]) + std::abs(y[1]) + std::abs(y[2]) +
-                        c.cohesion);
+        return acceptable(y, c.sp, c.k, c.t, c.cohesion);
       }
 
       /// The return of the sorted principal stresses @p x onto the main
       /// plane alone, in closed form (the answer for most yielding
-      /// particles): true and @p y if it is the answer. This and the edge
-      /// returns are forced inline into return_stress() (called out of
-      /// line, they cost a yielding bar 10 % of its update); the general
-      /// active sets below, rarely reached, stay out of line.
+      /// particles): true and @p y if it is the answer; otherwise @p y is
+      /// the main plane's result (@p x if its multiplier is not positive),
+      /// which tells which edge to try. This and the edge returns are
+      /// forced inline into the particle loop; the general active sets,
+      /// rarely reached, stay out of line.
+      template <typename Strength>
       DEAL_II_ALWAYS_INLINE inline bool
       return_to_main_plane(const std::array<double, 3> &x,
-                           const ReturnConstants       &c,
+                           const Strength              &s,
                            std::array<double, 3>       &y)
       {
-        const double                b0 = 1 + c.ss, b2 = -(1 - c.ss);
-        const double                tr = b0 + b2;
-        const std::array<double, 3> Db = {{c.lambda * tr + c.two_g * b0,
-                                           c.lambda * tr,
-                                           c.lambda * tr + c.two_g * b2}};
-        const double                a0 = 1 + c.sp, a2 = -(1 - c.sp);
-        const double inv_denominator = 1 / (a0 * Db[0] + a2 * Db[2]);
-        const double dl = (a0 * x[0] + a2 * x[2] - c.k) * inv_denominator;
+        const double *const Db = &s.derived[main_db];
+        const double        a0 = 1 + s.sin_phi, a2 = -(1 - s.sin_phi);
+        const double        k               = s.derived[k_index];
+        const double        inv_denominator = s.derived[main_inverse];
+        const double        dl = (a0 * x[0] + a2 * x[2] - k) * inv_denominator;
+        y                      = x;
         if (!(dl > 0))
           return false;
         y = {{x[0] - dl * Db[0], x[1] - dl * Db[1], x[2] - dl * Db[2]}};
         // Refined once (see return_to_active_set()).
-        const double d2 = (a0 * y[0] + a2 * y[2] - c.k) * inv_denominator;
+        const double d2 = (a0 * y[0] + a2 * y[2] - k) * inv_denominator;
         for (unsigned int d = 0; d < 3; ++d)
           y[d] -= d2 * Db[d];
-        return acceptable(y, c);
+        return acceptable(y, s.sin_phi, k, s.tension_cutoff, s.cohesion);
       }
 
       DEAL_II_ALWAYS_INLINE inline double
@@ -231,34 +216,28 @@ namespace psmpm
       /// The return of @p x onto an edge in closed form (Cramer's rule):
       /// the main plane with that of the neighbouring sextant where
       /// sigma_1 = sigma_2 (@p e = 1) or sigma_2 = sigma_3 (@p e = 2).
+      template <typename Strength>
       DEAL_II_ALWAYS_INLINE inline bool
       return_to_edge(const std::array<double, 3> &x,
-                     const ReturnConstants       &c,
+                     const Strength              &s,
                      const unsigned int           e,
                      std::array<double, 3>       &y)
       {
-        const double b0 = 1 + c.ss, b2 = -(1 - c.ss), a0 = 1 + c.sp,
-                     a2                = -(1 - c.sp);
-        const double                l  = c.lambda * (b0 + b2);
-        const std::array<double, 3> Dm = {
-          {l + c.two_g * b0, l, l + c.two_g * b2}};
+        const double *const E   = &s.derived[edge_block + edge_size * (e - 1)];
+        const double        inv = E[7];
+        if (inv == 0)
+          return false;
+        const double                a0 = 1 + s.sin_phi, a2 = -(1 - s.sin_phi);
+        const double                k  = s.derived[k_index];
+        const double *const         Dm = &s.derived[main_db];
         const std::array<double, 3> am = {{a0, 0, a2}};
         const std::array<double, 3> ae = e == 1 ?
                                            std::array<double, 3>{{0, a0, a2}} :
                                            std::array<double, 3>{{a0, a2, 0}};
-        const std::array<double, 3> De =
-          e == 1 ?
-            std::array<double, 3>{{l, l + c.two_g * b0, l + c.two_g * b2}} :
-            std::array<double, 3>{{l + c.two_g * b0, l + c.two_g * b2, l}};
-        const double A00 = dot(am, Dm), A01 = dot(am, De), A10 = dot(ae, Dm),
-                     A11 = dot(ae, De);
-        const double det = A00 * A11 - A01 * A10;
-        if (!(std::abs(det) > 1e-10 * std::abs(A00 * A11)))
-          return false;
-        const double inv = 1 / det;
+        const double A00 = E[3], A01 = E[4], A10 = E[5], A11 = E[6];
         const auto   solve =
           [&](const std::array<double, 3> &z, double &d0, double &d1) {
-            const double r0 = dot(am, z) - c.k, r1 = dot(ae, z) - c.k;
+            const double r0 = dot(am, z) - k, r1 = dot(ae, z) - k;
             d0 = (r0 * A11 - A01 * r1) * inv;
             d1 = (A00 * r1 - A10 * r0) * inv;
           };
@@ -267,11 +246,11 @@ namespace psmpm
         if (!(d0 >= 0 && d1 >= 0))
           return false;
         for (unsigned int d = 0; d < 3; ++d)
-          y[d] = x[d] - d0 * Dm[d] - d1 * De[d];
+          y[d] = x[d] - d0 * Dm[d] - d1 * E[d];
         solve(y, d0, d1); // refined once, as in return_to_active_set()
         for (unsigned int d = 0; d < 3; ++d)
-          y[d] -= d0 * Dm[d] + d1 * De[d];
-        return acceptable(y, c);
+          y[d] -= d0 * Dm[d] + d1 * E[d];
+        return acceptable(y, s.sin_phi, k, s.tension_cutoff, s.cohesion);
       }
 
       /// The planes of the sorted frame: the main plane, the two edge
@@ -390,7 +369,168 @@ namespace psmpm
           }
         return false;
       }
+      /// The returns that few particles need: every active set in turn,
+      /// then the apex (out of line).
+      template <typename Strength>
+      __attribute__((noinline)) bool
+      return_by_active_sets_or_apex(const std::array<double, 3> &x,
+                                    const Strength              &strength,
+                                    std::array<double, 3>       &y)
+      {
+        const ReturnConstants c = return_constants(strength);
+        if (return_by_active_sets(x, c, y))
+          return true;
+        // No active set satisfies the conditions: the apex of a
+        // non-associated potential, where the stress is the apex itself.
+        const double apex =
+          c.sp > 0 ?
+            std::min(c.t, strength.cohesion * strength.cos_phi / c.sp) :
+            std::min(c.t, (x[0] + x[1] + x[2]) / 3);
+        y = {{apex, apex, apex}};
+        return true;
+      }
+
+      /// The return of the principal stresses @p sigma (any order) for the
+      /// prepared @p strength: false if they are inside the surface
+      /// (unchanged). The main plane, then the edge its result points to
+      /// (y_2 < y_3: sigma_2 = sigma_3; else sigma_1 = sigma_2), then the
+      /// other edge, all in closed form (what most yielding particles
+      /// need: the main plane, or an edge in uniaxial and triaxial
+      /// states), then every active set.
+      template <typename Strength>
+      DEAL_II_ALWAYS_INLINE inline bool
+      return_principal(const Strength &strength, std::array<double, 3> &sigma)
+      {
+        // Sorted frame: x[0] >= x[1] >= x[2] are sigma[o[0]], ...
+        std::array<unsigned int, 3> o = {{0, 1, 2}};
+        if (sigma[o[0]] < sigma[o[1]])
+          std::swap(o[0], o[1]);
+        if (sigma[o[1]] < sigma[o[2]])
+          std::swap(o[1], o[2]);
+        if (sigma[o[0]] < sigma[o[1]])
+          std::swap(o[0], o[1]);
+        const std::array<double, 3> x = {
+          {sigma[o[0]], sigma[o[1]], sigma[o[2]]}};
+        const double sp = strength.sin_phi;
+        if ((1 + sp) * x[0] - (1 - sp) * x[2] - strength.derived[k_index] <=
+              0 &&
+            x[0] <= strength.tension_cutoff)
+          return false;
+        std::array<double, 3> y;
+        if (!return_to_main_plane(x, strength, y))
+          {
+            const unsigned int first = y[1] < y[2] ? 2 : 1;
+            if (!return_to_edge(x, strength, first, y) &&
+                !return_to_edge(x, strength, 3 - first, y))
+              return_by_active_sets_or_apex(x, strength, y);
+          }
+        for (unsigned int d = 0; d < 3; ++d)
+          sigma[o[d]] = y[d];
+        return true;
+      }
+
+
+
+      template <int dim>
+      struct MohrCoulombReturn
+      {
+        const MohrCoulomb<dim> &model;
+
+        void
+        prepare(typename PlasticHypoelastic<dim>::Strength &s) const
+        {
+          model.prepare(s);
+        }
+
+        /// The elastic test: sigma_1 and sigma_3 by max/min, no sort.
+        bool
+        inside(const typename PlasticHypoelastic<dim>::Strength &s,
+               const std::array<double, 3>                      &sigma) const
+        {
+          const double s1 = std::max(std::max(sigma[0], sigma[1]), sigma[2]);
+          const double s3 = std::min(std::min(sigma[0], sigma[1]), sigma[2]);
+          return (1 + s.sin_phi) * s1 - (1 - s.sin_phi) * s3 - s.derived[0] <=
+                   0 &&
+                 s1 <= s.tension_cutoff;
+        }
+
+        /// The elastic test of a plane-strain stress from the centre c
+        /// and squared radius r^2 of its in-plane Mohr circle and sigma_zz
+        /// = z, without the square root: by where z lies against c -+ r,
+        /// f <= 0 is alpha r <= beta with alpha >= 0.
+        bool
+        inside_plane(const typename PlasticHypoelastic<dim>::Strength &s,
+                     const double                                      c,
+                     const double                                      r2,
+                     const double                                      z) const
+        {
+          const double sp = s.sin_phi, k = s.derived[0], t = s.tension_cutoff;
+          const auto   at_most = [r2](const double alpha, const double beta) {
+            return beta >= 0 && alpha * alpha * r2 <= beta * beta;
+          };
+          const double dz = z - c;
+          bool         inside;
+          if (dz >= 0 && dz * dz >= r2) // z = sigma_1
+            inside = at_most(1 - sp, k + (1 - sp) * c - (1 + sp) * z);
+          else if (dz <= 0 && dz * dz >= r2) // z = sigma_3
+            inside = at_most(1 + sp, k + (1 - sp) * z - (1 + sp) * c);
+          else
+            inside = at_most(2, k - 2 * sp * c);
+          return inside && z <= t && at_most(1, t - c);
+        }
+
+        bool
+        operator()(const typename PlasticHypoelastic<dim>::Strength &s,
+                   std::array<double, 3> &sigma) const
+        {
+          return return_principal(s, sigma);
+        }
+      };
     } // namespace
+
+
+
+    template <int dim>
+    void
+    MohrCoulomb<dim>::prepare(
+      typename PlasticHypoelastic<dim>::Strength &s) const
+    {
+      const double lambda = this->lame_lambda();
+      const double two_g  = 2 * this->shear_modulus();
+      const double b0 = 1 + s.sin_psi, b2 = -(1 - s.sin_psi),
+                   a0 = 1 + s.sin_phi, a2 = -(1 - s.sin_phi);
+      const double                l  = lambda * (b0 + b2);
+      const std::array<double, 3> Dm = {{l + two_g * b0, l, l + two_g * b2}};
+      const std::array<double, 3> am = {{a0, 0, a2}};
+      auto                       &d  = s.derived;
+      d[k_index]                     = 2 * s.cohesion * s.cos_phi;
+      d[lambda_index]                = lambda;
+      d[two_g_index]                 = two_g;
+      for (unsigned int i = 0; i < 3; ++i)
+        d[main_db + i] = Dm[i];
+      d[main_inverse] = 1 / (a0 * Dm[0] + a2 * Dm[2]);
+      for (const unsigned int e : {1u, 2u})
+        {
+          const std::array<double, 3> ae =
+            e == 1 ? std::array<double, 3>{{0, a0, a2}} :
+                     std::array<double, 3>{{a0, a2, 0}};
+          const std::array<double, 3> De =
+            e == 1 ?
+              std::array<double, 3>{{l, l + two_g * b0, l + two_g * b2}} :
+              std::array<double, 3>{{l + two_g * b0, l + two_g * b2, l}};
+          const double A00 = dot(am, Dm), A01 = dot(am, De), A10 = dot(ae, Dm),
+                       A11  = dot(ae, De);
+          const double  det = A00 * A11 - A01 * A10;
+          double *const E   = &d[edge_block + edge_size * (e - 1)];
+          for (unsigned int i = 0; i < 3; ++i)
+            E[i] = De[i];
+          E[3] = A00;
+          E[4] = A01;
+          E[5] = A10;
+          E[6] = A11;
+          E[7] = std::abs(det) > 1e-10 * std::abs(A00 * A11) ? 1 / det : 0;
+        }
+    }
 
 
 
@@ -400,44 +540,11 @@ namespace psmpm
       const typename PlasticHypoelastic<dim>::Strength &strength,
       std::array<double, 3>                            &sigma) const
     {
-      const ReturnConstants c = {strength.sin_phi,
-                                 strength.sin_psi,
-                                 2 * strength.cohesion * strength.cos_phi,
-                                 strength.tension_cutoff,
-                                 strength.cohesion,
-                                 this->lame_lambda(),
-                                 2 * this->shear_modulus()};
-      // Sorted frame: x[0] >= x[1] >= x[2] are sigma[o[0]], ...
-      std::array<unsigned int, 3> o = {{0, 1, 2}};
-      if (sigma[o[0]] < sigma[o[1]])
-        std::swap(o[0], o[1]);
-      if (sigma[o[1]] < sigma[o[2]])
-        std::swap(o[1], o[2]);
-      if (sigma[o[0]] < sigma[o[1]])
-        std::swap(o[0], o[1]);
-      const std::array<double, 3> x = {{sigma[o[0]], sigma[o[1]], sigma[o[2]]}};
-      if ((1 + c.sp) * x[0] - (1 - c.sp) * x[2] - c.k <= 0 && x[0] <= c.t)
-        return false;
-
-      // The main plane, then the two edges in closed form (what most
-      // particles that are not on the main plane return to: a body in
-      // uniaxial or triaxial states), then every active set.
-      std::array<double, 3> y;
-      if (return_to_main_plane(x, c, y) || return_to_edge(x, c, 1, y) ||
-          return_to_edge(x, c, 2, y) || return_by_active_sets(x, c, y))
-        {
-          for (unsigned int d = 0; d < 3; ++d)
-            sigma[o[d]] = y[d];
-          return true;
-        }
-
-      // No active set satisfies the conditions: the apex of a
-      // non-associated potential, where the stress is the apex itself.
-      const double apex =
-        c.sp > 0 ? std::min(c.t, strength.cohesion * strength.cos_phi / c.sp) :
-                   std::min(c.t, (x[0] + x[1] + x[2]) / 3);
-      sigma = {{apex, apex, apex}};
-      return true;
+      // The particle loop calls return_principal() with the strength
+      // prepared once per batch; here it is prepared for this call.
+      typename PlasticHypoelastic<dim>::Strength prepared = strength;
+      prepare(prepared);
+      return return_principal(prepared, sigma);
     }
 
 

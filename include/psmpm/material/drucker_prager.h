@@ -52,7 +52,8 @@ namespace psmpm
              double                  *state,
              double                  *volume_ratio) const override;
 
-      /// eta, xi c, eta_bar of @p strength into strength.derived.
+      /// eta, xi c, eta_bar of @p strength, G, K and 1 / (G + K eta
+      /// eta_bar) into strength.derived.
       void
       prepare(typename PlasticHypoelastic<dim>::Strength &strength) const;
 

@@ -179,8 +179,8 @@ namespace psmpm
        */
       virtual void
       dissipated_energy(const unsigned int n,
-                        const double      *state,
-                        double            *per_unit_mass) const
+                        const double * /*state*/,
+                        double *per_unit_mass) const
       {
         for (unsigned int i = 0; i < n; ++i)
           per_unit_mass[i] = 0;

@@ -52,8 +52,15 @@ namespace psmpm
              double                  *state,
              double                  *volume_ratio) const override;
 
+      /// The return's constants of @p strength into strength.derived:
+      /// k = 2 c cos phi, the Lame constants, and the closed forms' D b
+      /// vectors, matrices and inverses for the main plane and the edges.
+      void
+      prepare(typename PlasticHypoelastic<dim>::Strength &strength) const;
+
       /// The return of the principal stresses @p sigma (any order) for
-      /// @p strength; false if they are inside the surface (unchanged).
+      /// @p strength (prepared here); false if they are inside the surface
+      /// (unchanged).
       bool
       return_stress(const typename PlasticHypoelastic<dim>::Strength &strength,
                     std::array<double, 3> &sigma) const;

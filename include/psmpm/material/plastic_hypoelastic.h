@@ -63,9 +63,10 @@ namespace psmpm
         double cos_phi        = 1;
         double sin_psi        = 0;
         double tension_cutoff = 0; ///< +infinity: none
-        /// Constants the return derives from the above in its prepare()
-        /// (once per batch, or per softened particle).
-        std::array<double, 4> derived = {{0, 0, 0, 0}};
+        /// Constants the return derives from the above and the elastic
+        /// constants in its prepare() (once per batch, or per softened
+        /// particle), so that a particle's return divides by nothing.
+        std::array<double, 24> derived = {};
       };
 
       /// Friction angle, Dilatancy angle, Cohesion, Tension cutoff,
@@ -160,6 +161,18 @@ namespace psmpm
                   double                  *state,
                   double                  *volume_ratio) const;
 
+      /// What the update of every particle of a batch uses: the Lame
+      /// constants, the reference density, and 1 / E and nu for the
+      /// elastic compliance.
+      struct BatchConstants
+      {
+        double lambda;
+        double two_g;
+        double rho0;
+        double inv_e;
+        double nu;
+      };
+
       /// After the return of the principal stresses @p trial to @p sigma:
       /// the plastic strain increment C^-1 (trial - sigma) (principal
       /// frame) and the equivalent plastic strain of @p block, with
@@ -167,21 +180,13 @@ namespace psmpm
       template <typename Return>
       void
       finish_return(const Return                &ret,
+                    const BatchConstants        &c,
                     const std::array<double, 3> &trial,
                     std::array<double, 3>       &sigma,
                     double                      *block,
                     std::array<double, 3>       &plastic_increment) const;
 
     private:
-      /// What the update of every particle of a batch uses: the Lame
-      /// constants and the reference density.
-      struct BatchConstants
-      {
-        double lambda;
-        double two_g;
-        double rho0;
-      };
-
       /// The strength of the particle with state @p block: @p base, or
       /// with softening and kappa > 0 its own, prepared by @p ret in
       /// @p softened (no copy per particle otherwise).

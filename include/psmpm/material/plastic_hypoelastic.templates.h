@@ -16,13 +16,14 @@ namespace psmpm
     template <typename Return>
     void
     PlasticHypoelastic<dim>::finish_return(const Return                &ret,
+                                           const BatchConstants        &c,
                                            const std::array<double, 3> &trial,
                                            std::array<double, 3>       &sigma,
                                            double                      *block,
                                            std::array<double, 3> &plastic) const
     {
-      const double inv_E = 1 / this->youngs_modulus;
-      const double nu    = this->poisson_ratio;
+      const double inv_E = c.inv_e;
+      const double nu    = c.nu;
       // The plastic strain of a stress correction: C^-1 (trial - sigma).
       const auto correction_strain = [&](const std::array<double, 3> &s) {
         const std::array<double, 3> d = {
@@ -32,7 +33,9 @@ namespace psmpm
                                       (d[2] - nu * (d[0] + d[1])) * inv_E}};
       };
       const auto equivalent = [](const std::array<double, 3> &e) {
-        const double m = (e[0] + e[1] + e[2]) / 3;
+        // A product, not a division: this is on the latency chain of a
+        // yielding particle's update.
+        const double m = (e[0] + e[1] + e[2]) * (1. / 3);
         return std::sqrt(2. / 3 *
                          ((e[0] - m) * (e[0] - m) + (e[1] - m) * (e[1] - m) +
                           (e[2] - m) * (e[2] - m)));
@@ -113,7 +116,7 @@ namespace psmpm
       if (!ret.inside(s, sigma) && ret(s, sigma))
         {
           std::array<double, 3> ep;
-          finish_return(ret, trial, sigma, block, ep);
+          finish_return(ret, c, trial, sigma, block, ep);
           block[plastic_xx] += ep[0];
           block[2] += 0.5 * (ep[1] + ep[2]);
           block[work_column] +=
@@ -172,7 +175,7 @@ namespace psmpm
       std::array<double, 4>       &t) const
     {
       std::array<double, 3> ep;
-      finish_return(ret, trial, sigma, block, ep);
+      finish_return(ret, c, trial, sigma, block, ep);
       const double inv  = radius > 0 ? 1 / radius : 0;
       const double cos2 = radius > 0 ? half * inv : 1;
       const double sin2 = t[2] * inv;
@@ -245,16 +248,20 @@ namespace psmpm
     {
       const BatchConstants c      = {this->lame_lambda(),
                                      2 * this->shear_modulus(),
-                                     this->density};
+                                     this->density,
+                                     1 / this->youngs_modulus,
+                                     this->poisson_ratio};
       const unsigned int   stride = this->state_stride();
       Strength             base   = strength(0);
       ret.prepare(base);
+      // Outside the loop: Strength is 30 values, not to be initialised
+      // for every particle.
+      Strength softened;
       for (unsigned int i = 0; i < n; ++i)
         {
           this->request_ahead(n, stress, state, stride, i);
           double *const   block = state + stride * i;
-          Strength        softened;
-          const Strength &s = particle_strength(ret, base, block, softened);
+          const Strength &s     = particle_strength(ret, base, block, softened);
           if constexpr (dim == 1)
             update_uniaxial(ret,
                             s,
