@@ -339,6 +339,13 @@ namespace psmpm
       {
         return local_lumped;
       }
+      /// Per local relevant DoF: 1 where component @p d is constrained
+      /// (Dirichlet or tied).
+      const std::vector<char> &
+      constrained_dofs(const unsigned int d) const
+      {
+        return component_constraints.constrained(d);
+      }
       /// Full-support diagonal in local relevant numbering.
       const std::vector<double> &
       full_support_diagonal() const
