@@ -12,14 +12,17 @@
 #include <psmpm/app/run_limits.h>
 #include <psmpm/base/checked_file.h>
 #include <psmpm/base/cpu_time.h>
-#include <psmpm/base/version.h>
 #include <psmpm/base/summary.h>
+#include <psmpm/base/version.h>
 #include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/simulator.h>
 
+#include <algorithm>
 #include <csignal>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -230,7 +233,7 @@ end
       /// (those in the summary).
       void
       print_test_output(const Problem::TestOutputKeys &keys,
-                        const Summary    &summary,
+                        const Summary                 &summary,
                         std::ostream                  &out)
       {
         for (const std::string &key : keys.sizes)
@@ -430,6 +433,79 @@ end
           apply_override(prm, o);
       }
 
+      /// Rank 0's text and that of the first rank whose parameters differ
+      /// from it, as the entries in which they differ ("" if none is
+      /// found among the entries that matter for results).
+      std::string
+      first_difference(const std::vector<std::string> &texts)
+      {
+        for (unsigned int r = 1; r < texts.size(); ++r)
+          if (texts[r] != texts[0])
+            {
+              const auto differences =
+                Simulator::Checkpoint::parameter_differences(texts[0],
+                                                             texts[r]);
+              return "rank 0 and rank " + std::to_string(r) +
+                     (differences.empty() ? std::string(" differ") :
+                                            " differ in " + differences[0]);
+            }
+        return "";
+      }
+
+      /**
+       * read_parameters() on every rank of @p comm, which must agree: a
+       * parameter file that some ranks cannot read, or a scene that
+       * differs between ranks (an MPMD launch, --set per rank), ends every
+       * rank with bad input instead of a wait in a collective call of the
+       * set-up. On one rank: read_parameters().
+       */
+      void
+      read_parameters_on_all_ranks(const CommandLine &cl,
+                                   ParameterHandler  &prm,
+                                   MPI_Comm           comm)
+      {
+        if (Utilities::MPI::n_mpi_processes(comm) == 1)
+          return read_parameters(cl, prm);
+        std::exception_ptr failure;
+        std::string        error;
+        try
+          {
+            read_parameters(cl, prm);
+          }
+        catch (const std::exception &e)
+          {
+            failure = std::current_exception();
+            error   = message_of(e);
+          }
+        const auto errors = Utilities::MPI::all_gather(comm, error);
+        for (unsigned int r = 0; r < errors.size(); ++r)
+          if (!errors[r].empty())
+            {
+              // Rank 0 prints the message: its own exception if it has one.
+              if (failure && r == 0)
+                std::rethrow_exception(failure);
+              AssertThrow(false,
+                          ExcMessage("on rank " + std::to_string(r) + ": " +
+                                     errors[r]));
+            }
+        std::ostringstream text;
+        prm.print_parameters(text, ParameterHandler::ShortPRM);
+        const std::size_t hash   = std::hash<std::string>()(text.str());
+        const auto        hashes = Utilities::MPI::all_gather(comm, hash);
+        if (std::all_of(hashes.begin(), hashes.end(), [&](const auto h) {
+              return h == hashes[0];
+            }))
+          return;
+        const std::string difference =
+          first_difference(Utilities::MPI::all_gather(comm, text.str()));
+        AssertThrow(false,
+                    ExcMessage("the parameters differ between ranks" +
+                               (difference.empty() ? std::string() :
+                                                     " (" + difference + ")") +
+                               "; every rank must read the same scene and "
+                               "--set arguments."));
+      }
+
       /// The entries every Problem shares, then the Problem, set up: all
       /// checks of the input that can fail end here, before the output
       /// directory is touched.
@@ -505,7 +581,7 @@ end
             scene.where = scene.cl.prm_file.empty() ?
                             "the embedded default scene" :
                             "file " + scene.cl.prm_file;
-            read_parameters(scene.cl, prm);
+            read_parameters_on_all_ranks(scene.cl, prm, comm);
             if (scene.cl.print_parameters)
               {
                 if (root)
@@ -565,21 +641,18 @@ end
         return std::nullopt;
       }
 
-      /// parameters.prm, written on rank 0; every rank throws
-      /// ExcWriteFailed if it could not be written.
+      /// Run @p write on rank 0; every rank throws ExcWriteFailed if it
+      /// failed (no rank goes on alone).
       void
-      write_parameters(const ParameterHandler &prm,
-                       const std::string      &dir,
-                       MPI_Comm                comm,
-                       const bool              root)
+      write_on_root(const std::function<void()> &write,
+                    MPI_Comm                     comm,
+                    const bool                   root)
       {
         std::string error;
         if (root)
           try
             {
-              write_atomically(dir + "/parameters.prm", [&](std::ostream &out) {
-                prm.print_parameters(out, ParameterHandler::PRM);
-              });
+              write();
             }
           catch (const ExcWriteFailed &e)
             {
@@ -590,11 +663,29 @@ end
           throw ExcWriteFailed(error);
       }
 
+      /// parameters.prm, written on rank 0; every rank throws
+      /// ExcWriteFailed if it could not be written.
+      void
+      write_parameters(const ParameterHandler &prm,
+                       const std::string      &dir,
+                       MPI_Comm                comm,
+                       const bool              root)
+      {
+        write_on_root(
+          [&]() {
+            write_atomically(dir + "/parameters.prm", [&](std::ostream &out) {
+              prm.print_parameters(out, ParameterHandler::PRM);
+            });
+          },
+          comm,
+          root);
+      }
+
       /// The entries of summary.json that say how the run was made.
       void
-      add_run_information(Summary &summary,
-                          const Timer          &wall,
-                          const std::string    &parameter_file)
+      add_run_information(Summary           &summary,
+                          const Timer       &wall,
+                          const std::string &parameter_file)
       {
         summary.set("wall_time_s", wall.wall_time());
         summary.set("cpu_time_s", process_cpu_seconds());
@@ -612,11 +703,11 @@ end
                   MPI_Comm                comm,
                   const bool              root)
       {
-        const std::string   &dir         = scene.dir;
-        const bool           test_output = scene.output.test_output;
-        LogFile              log_file(dir + "/log.txt", root, scene.cl.resume);
-        Summary summary;
-        const std::string    parameter_file =
+        const std::string &dir         = scene.dir;
+        const bool         test_output = scene.output.test_output;
+        LogFile            log_file(dir + "/log.txt", root, scene.cl.resume);
+        Summary            summary;
+        const std::string  parameter_file =
           scene.cl.prm_file.empty() ? "(default scene)" : scene.cl.prm_file;
         try
           {
@@ -630,9 +721,11 @@ end
             write_parameters(prm, dir, comm, root);
             const auto status = scene.problem->run(dir, summary, comm);
             add_run_information(summary, wall, parameter_file);
+            write_on_root([&]() { summary.write(dir + "/summary.json"); },
+                          comm,
+                          root);
             if (root)
               {
-                summary.write(dir + "/summary.json");
                 if (test_output)
                   {
                     std::cout << "status = " << Simulator::status_name(status)

@@ -23,9 +23,19 @@ namespace psmpm
   void
   inject_write_failure(const std::string &file)
   {
-    static const char *at    = std::getenv("PSMPM_FAIL_WRITE_AT");
-    static const char *match = std::getenv("PSMPM_FAIL_WRITE_MATCH");
+    const char *at    = std::getenv("PSMPM_FAIL_WRITE_AT");
+    const char *match = std::getenv("PSMPM_FAIL_WRITE_MATCH");
+    // Counting restarts when the variables change: a test process runs
+    // several cases one after the other.
+    static std::string setting;
     static long        count = 0;
+    const std::string  now =
+      std::string(at != nullptr ? at : "") + '\n' + (match ? match : "");
+    if (now != setting)
+      {
+        setting = now;
+        count   = 0;
+      }
     if (at == nullptr ||
         (match != nullptr && file.find(match) == std::string::npos))
       return;

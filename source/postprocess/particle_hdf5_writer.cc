@@ -85,6 +85,26 @@ namespace psmpm
           }
         out << "      </Grid>\n";
       }
+
+      /// Disk full on demand (inject_write_failure()), decided on rank 0
+      /// for all ranks of @p comm before the collective write.
+      void
+      inject_on_all_ranks(const std::string &path, MPI_Comm comm)
+      {
+        std::string injected;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          try
+            {
+              inject_write_failure(path);
+            }
+          catch (const ExcWriteFailed &e)
+            {
+              injected = e.what();
+            }
+        injected = Utilities::MPI::broadcast(comm, injected, 0);
+        if (!injected.empty())
+          throw ExcWriteFailed(injected);
+      }
     } // namespace
 
 
@@ -150,6 +170,7 @@ namespace psmpm
       // patches[0] and an unset cell count, and skips the collective
       // dataset creation), so only the ranks with particles write, in
       // rank order. Two particles at the same position stay two points.
+      inject_on_all_ranks(path, comm);
       std::string error;
       MPI_Comm    writers;
       MPI_Comm_split(comm, n_local > 0 ? 0 : MPI_UNDEFINED, rank, &writers);

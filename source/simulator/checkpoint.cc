@@ -14,9 +14,12 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <regex>
+#include <sstream>
 #include <unistd.h>
 
 namespace psmpm
@@ -91,6 +94,50 @@ namespace psmpm
           "Output/Test output"};
         return std::find(keys.begin(), keys.end(), key) != keys.end() ||
                key.rfind("Checkpoint/", 0) == 0 || key.rfind("Limits/", 0) == 0;
+      }
+
+      /// The 64-bit FNV-1a checksum of the bytes of @p file, in
+      /// hexadecimal; empty if it cannot be read.
+      std::string
+      checksum_of(const std::string &file)
+      {
+        std::ifstream in(file, std::ios::binary);
+        if (!in.is_open() || fs::is_directory(file))
+          return "";
+        std::uint64_t     hash = 14695981039346656037ull;
+        std::vector<char> block(1 << 16);
+        while (in)
+          {
+            in.read(block.data(), block.size());
+            for (std::streamsize k = 0; k < in.gcount(); ++k)
+              {
+                hash ^= static_cast<unsigned char>(block[k]);
+                hash *= 1099511628211ull;
+              }
+          }
+        if (in.bad())
+          return "";
+        std::ostringstream hex;
+        hex << std::hex << std::setw(16) << std::setfill('0') << hash;
+        return hex.str();
+      }
+
+      /// "entry" -> (file, checksum) of a text of file_checksums().
+      std::map<std::string, std::pair<std::string, std::string>>
+      checksums_of(const std::string &text)
+      {
+        std::map<std::string, std::pair<std::string, std::string>> files;
+        std::istringstream                                         in(text);
+        std::string                                                line;
+        while (std::getline(in, line))
+          {
+            const auto a = line.find('\t');
+            const auto b = line.rfind('\t');
+            if (a != std::string::npos && b > a)
+              files[line.substr(0, a)] = {line.substr(a + 1, b - a - 1),
+                                          line.substr(b + 1)};
+          }
+        return files;
       }
 
       /// Particle @p i with its cell first: the cell is part of the state
@@ -380,6 +427,53 @@ namespace psmpm
             !(d.count(key) && d.at(key) == value))
           differences.push_back(key + ": (not in the checkpoint) -> '" + value +
                                 "'");
+      return differences;
+    }
+
+
+
+    std::string
+    Checkpoint::file_checksums(const std::string &parameters)
+    {
+      std::string text;
+      for (const auto &[key, value] : entries_of(parameters))
+        {
+          const bool is_file =
+            key == "File" ||
+            (key.size() > 5 && key.compare(key.size() - 5, 5, "/File") == 0);
+          if (!is_file || value.empty())
+            continue;
+          const std::string sum = checksum_of(value);
+          if (!sum.empty())
+            text += key + "\t" + value + "\t" + sum + "\n";
+        }
+      return text;
+    }
+
+
+
+    std::vector<std::string>
+    Checkpoint::file_differences(const std::string &saved,
+                                 const std::string &current)
+    {
+      const auto               now = checksums_of(current);
+      std::vector<std::string> differences;
+      for (const auto &[key, then] : checksums_of(saved))
+        {
+          const auto it = now.find(key);
+          if (it != now.end() && it->second.first != then.first)
+            continue; // another file: a parameter difference
+          if (it == now.end())
+            differences.push_back(key + ": the file " + then.first +
+                                  " cannot be read any more (it was read "
+                                  "when the run started)");
+          else if (it->second.second != then.second)
+            differences.push_back(key + ": the content of " + then.first +
+                                  " changed since the checkpoint (FNV-1a "
+                                  "checksum " +
+                                  then.second + " at the run's start, " +
+                                  it->second.second + " now)");
+        }
       return differences;
     }
 

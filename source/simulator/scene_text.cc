@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/simulator/checkpoint.h>
 #include <psmpm/simulator/scene_text.h>
 
 #include <sstream>
@@ -21,6 +22,7 @@ namespace psmpm
       std::ostringstream defaults_text;
       declared.print_parameters(defaults_text, ParameterHandler::ShortPRM);
       defaults = defaults_text.str();
+      files    = Checkpoint::file_checksums(parameters);
     }
   } // namespace Simulator
 } // namespace psmpm

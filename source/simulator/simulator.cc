@@ -838,6 +838,14 @@ namespace psmpm
                                "); only Time/End time, the Output and "
                                "Checkpoint intervals and Limits may change "
                                "when resuming"));
+        // A scene that names no file stores none (as older checkpoints).
+        if (archive.has("psmpm/files"))
+          for (const auto &d :
+               Checkpoint::file_differences(archive.get_text("psmpm/files"),
+                                            scene.files))
+            AssertThrow(false,
+                        ExcMessage(d + "; resume with the files the run "
+                                       "started with, or start a new run"));
       }
     } // namespace
 
@@ -850,6 +858,8 @@ namespace psmpm
       archive.put_text("psmpm/format", checkpoint_format);
       archive.put_text("psmpm/version", version());
       archive.put_text("psmpm/parameters", scene_text.parameters);
+      if (!scene_text.files.empty())
+        archive.put_text("psmpm/files", scene_text.files);
       archive.put_integer("psmpm/dimension", dim);
       archive.put_integer("psmpm/n_mpi_ranks",
                           Utilities::MPI::n_mpi_processes(comm));

@@ -116,6 +116,26 @@ namespace psmpm
                             const std::string &defaults = "");
 
       /**
+       * One line "Subsection/File<TAB>file<TAB>checksum" for every entry
+       * named File in the ShortPRM text @p parameters (the mesh, the
+       * bodies' geometry; paths as the readers open them, already
+       * resolved against the parameter file) that names a readable file:
+       * the 64-bit FNV-1a checksum of its bytes, in hexadecimal.
+       */
+      static std::string
+      file_checksums(const std::string &parameters);
+
+      /**
+       * The files of @p saved (file_checksums() at the start of the run
+       * that wrote a checkpoint) whose content differs in @p current (the
+       * same now), each as "<entry>: the content of <file> changed since
+       * the checkpoint (...)". A File entry whose path differs is a
+       * parameter difference instead (parameter_differences()).
+       */
+      static std::vector<std::string>
+      file_differences(const std::string &saved, const std::string &current);
+
+      /**
        * Every rank's @p local on rank 0, one vector per rank in rank order
        * (no vectors on the other ranks): the raw MPI_Gatherv that also
        * gathers the particles (Utilities::MPI::gather serializes and
