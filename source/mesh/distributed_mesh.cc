@@ -1,7 +1,8 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
-// Mesh/Distribution = distributed: the whole mesh is built on rank 0
-// only, and each rank receives its cells and their ghost layer.
+// Mesh/Distribution = distributed: each rank describes its own tile of a
+// block mesh, or the whole mesh is built on rank 0 only and each rank
+// receives its cells and their ghost layers.
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/mpi.templates.h>
@@ -9,6 +10,8 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <psmpm/base/root_errors.h>
+#include <psmpm/mesh/block_partition.h>
+#include <psmpm/mesh/distributed_mesh.h>
 #include <psmpm/mesh/mesh_generator.h>
 
 #include <algorithm>
@@ -54,54 +57,54 @@ namespace psmpm
             }
       }
 
-      /// Rank @p rank's part of @p whole (whose subdomain ids are the
-      /// owners, @p owner): its cells and @p layers layers of cells around
-      /// them (a cell of layer k shares a vertex with one of layer k - 1).
-      /// deal.II's description holds one layer; for two, the first layer
-      /// is described as the rank's own and then given back to its owners.
-      template <int dim>
-      TriangulationDescription::Description<dim, dim>
-      describe(Triangulation<dim>              &whole,
-               const std::vector<unsigned int> &owner,
-               const unsigned int               rank,
-               const unsigned int               layers,
-               const MPI_Comm                   comm)
-      {
-        if (layers == 2)
-          {
-            std::vector<bool> marked(whole.n_vertices(), false);
-            for (const auto &cell : whole.active_cell_iterators())
-              if (cell->subdomain_id() == rank)
-                for (const unsigned int v : cell->vertex_indices())
-                  marked[cell->vertex_index(v)] = true;
-            for (const auto &cell : whole.active_cell_iterators())
-              for (const unsigned int v : cell->vertex_indices())
-                if (marked[cell->vertex_index(v)])
-                  cell->set_subdomain_id(rank);
-          }
-        auto description = TriangulationDescription::Utilities::
-          create_description_from_triangulation(
-            whole,
-            comm,
-            TriangulationDescription::Settings::default_setting,
-            rank);
-        if (layers == 2)
-          {
-            for (auto &info : description.cell_infos[0])
-              {
-                const auto c = CellId(info.id).get_coarse_cell_id();
-                if (info.subdomain_id == rank && owner[c] != rank)
-                  info.subdomain_id = owner[c];
-                if (info.level_subdomain_id == rank && owner[c] != rank)
-                  info.level_subdomain_id = owner[c];
-              }
-            for (const auto &cell : whole.active_cell_iterators())
-              cell->set_subdomain_id(owner[cell->active_cell_index()]);
-          }
-        mark_rim_faces(whole, description, rank);
-        return description;
-      }
     } // namespace
+
+
+
+    template <int dim>
+    TriangulationDescription::Description<dim, dim>
+    describe_part(Triangulation<dim>              &whole,
+                  const std::vector<unsigned int> &owner,
+                  const unsigned int               rank,
+                  const unsigned int               layers,
+                  const MPI_Comm                   comm)
+    {
+      for (const auto &cell : whole.active_cell_iterators())
+        cell->set_subdomain_id(owner[cell->active_cell_index()]);
+      if (layers == 2)
+        {
+          std::vector<bool> marked(whole.n_vertices(), false);
+          for (const auto &cell : whole.active_cell_iterators())
+            if (cell->subdomain_id() == rank)
+              for (const unsigned int v : cell->vertex_indices())
+                marked[cell->vertex_index(v)] = true;
+          for (const auto &cell : whole.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              if (marked[cell->vertex_index(v)])
+                cell->set_subdomain_id(rank);
+        }
+      auto description = TriangulationDescription::Utilities::
+        create_description_from_triangulation(
+          whole,
+          comm,
+          TriangulationDescription::Settings::default_setting,
+          rank);
+      if (layers == 2)
+        {
+          for (auto &info : description.cell_infos[0])
+            {
+              const auto c = CellId(info.id).get_coarse_cell_id();
+              if (info.subdomain_id == rank && owner[c] != rank)
+                info.subdomain_id = owner[c];
+              if (info.level_subdomain_id == rank && owner[c] != rank)
+                info.level_subdomain_id = owner[c];
+            }
+          for (const auto &cell : whole.active_cell_iterators())
+            cell->set_subdomain_id(owner[cell->active_cell_index()]);
+        }
+      mark_rim_faces(whole, description, rank);
+      return description;
+    }
 
     template <int dim>
     std::vector<unsigned int>
@@ -110,6 +113,75 @@ namespace psmpm
       const unsigned int                              ghost_layers) const
     {
       AssertThrow(ghost_layers == 1 || ghost_layers == 2, ExcInternalError());
+      std::vector<unsigned int> owner;
+      if (create_distributed_blocks(tria, ghost_layers, owner))
+        return owner;
+      return create_distributed_on_root(tria, ghost_layers);
+    }
+
+
+
+    template <int dim>
+    bool
+    MeshGenerator<dim>::create_distributed_blocks(
+      parallel::fullydistributed::Triangulation<dim> &tria,
+      const unsigned int                              ghost_layers,
+      std::vector<unsigned int>                      &owner) const
+    {
+      if constexpr (dim != 2)
+        return false;
+      else
+        {
+          const MPI_Comm       comm    = tria.get_communicator();
+          const unsigned int   n_ranks = Utilities::MPI::n_mpi_processes(comm);
+          const BlockPartition partition(blocks_x, blocks_y, n_ranks);
+          const bool           blocks =
+            type == Type::criss_cross || type == Type::diagonal;
+          if (partitioner == "metis" || !blocks ||
+              (partitioner == "automatic" && !partition.valid()))
+            return false;
+          AssertThrow(
+            partition.valid(),
+            ExcMessage("Mesh/Partitioner = blocks: " + std::to_string(n_ranks) +
+                       " ranks do not tile " + std::to_string(blocks_x) +
+                       " x " + std::to_string(blocks_y) +
+                       " blocks (Mesh/Blocks x, Mesh/Blocks y) so that "
+                       "each rank has a block; use fewer ranks or "
+                       "Mesh/Partitioner = metis."));
+          // Every rank finds what create() would refuse: all throw alike.
+          check_block_shape();
+          BlockMesh mesh;
+          mesh.lower       = Point<2>(0, 0);
+          mesh.upper       = Point<2>(length, height);
+          mesh.nx          = blocks_x;
+          mesh.ny          = blocks_y;
+          mesh.criss_cross = type == Type::criss_cross;
+          tria.create_triangulation(
+            describe_block_part(mesh,
+                                partition,
+                                Utilities::MPI::this_mpi_process(comm),
+                                ghost_layers,
+                                comm));
+          names = {{"left", 0}, {"right", 1}, {"bottom", 2}, {"top", 3}};
+          // The checkpoints' owner of every cell (4 bytes a cell).
+          owner.resize(mesh.n_cells());
+          for (std::size_t c = 0; c < owner.size(); ++c)
+            {
+              const auto [i, j] = mesh.block_of(c);
+              owner[c]          = partition.owner(i, j);
+            }
+          return true;
+        }
+    }
+
+
+
+    template <int dim>
+    std::vector<unsigned int>
+    MeshGenerator<dim>::create_distributed_on_root(
+      parallel::fullydistributed::Triangulation<dim> &tria,
+      const unsigned int                              ghost_layers) const
+    {
       using Description = TriangulationDescription::Description<dim, dim>;
       const MPI_Comm            comm = tria.get_communicator();
       const unsigned int        rank = Utilities::MPI::this_mpi_process(comm);
@@ -159,9 +231,9 @@ namespace psmpm
         {
           for (unsigned int r = 1; r < n_ranks; ++r)
             {
-              const std::vector<char> buffer =
-                Utilities::pack(describe(whole, owner, r, ghost_layers, comm),
-                                false);
+              const std::vector<char> buffer = Utilities::pack(
+                describe_part(whole, owner, r, ghost_layers, comm),
+                false);
               const std::uint64_t size = buffer.size();
               int ierr = MPI_Send(&size, 1, MPI_UINT64_T, r, tag, comm);
               AssertThrowMPI(ierr);
@@ -176,7 +248,7 @@ namespace psmpm
                   AssertThrowMPI(ierr);
                 }
             }
-          mine = describe(whole, owner, 0, ghost_layers, comm);
+          mine = describe_part(whole, owner, 0, ghost_layers, comm);
           whole.clear();
         }
       else
@@ -203,6 +275,18 @@ namespace psmpm
       return owner;
     }
 
+    template TriangulationDescription::Description<1, 1>
+    describe_part(Triangulation<1> &,
+                  const std::vector<unsigned int> &,
+                  unsigned int,
+                  unsigned int,
+                  MPI_Comm);
+    template TriangulationDescription::Description<2, 2>
+    describe_part(Triangulation<2> &,
+                  const std::vector<unsigned int> &,
+                  unsigned int,
+                  unsigned int,
+                  MPI_Comm);
     template std::vector<unsigned int>
     MeshGenerator<1>::create_distributed(
       parallel::fullydistributed::Triangulation<1> &,

@@ -64,8 +64,8 @@ namespace psmpm
           "mesh (parallel::shared); distributed: a rank holds its own cells "
           "and the cells sharing a vertex with one "
           "(parallel::fullydistributed): memory per rank follows the rank's "
-          "share of the mesh. Rank 0 builds the whole mesh once and sends "
-          "the parts (with Powell-Sabin two layers of ghost cells). Verified "
+          "share of the mesh (with Powell-Sabin two layers of ghost cells; "
+          "Mesh/Partitioner says who builds the parts). Verified "
           "with Basis/Type = linear and powell-sabin, Transfer/"
           "Reconstruction = particles and the transfers on a fixed grid; "
           "a particle must stay within its rank's cells and ghost layers "
@@ -74,6 +74,20 @@ namespace psmpm
           "particle that moves further stops the run as unstable, naming "
           "the particle and its rank, where the replicated mesh would "
           "have found it.");
+        prm.declare_entry(
+          "Partitioner",
+          "automatic",
+          Patterns::Selection("automatic|blocks|metis"),
+          "How Mesh/Distribution = distributed splits the mesh between "
+          "ranks. blocks (Mesh/Type = criss-cross or diagonal): the ranks "
+          "tile the rectangle of blocks (px by py rectangles of whole "
+          "blocks, px py = the number of ranks, the fewest cut edges), "
+          "and every rank builds only its own tile and ghost layers, so no "
+          "rank ever holds the whole mesh; it needs px <= Blocks x and "
+          "py <= Blocks y for some such tiling. metis: rank 0 builds the "
+          "whole mesh, partitions it with METIS (as the replicated mesh "
+          "does) and sends each rank its part. automatic: blocks where it "
+          "applies, else metis. Ignored with one rank or a replicated mesh.");
       }
       prm.leave_subsection();
     }
@@ -96,7 +110,13 @@ namespace psmpm
       blocks_y            = prm.get_integer("Blocks y");
       file                = prm.get("File");
       distributed         = prm.get("Distribution") == "distributed";
+      partitioner         = prm.get("Partitioner");
       prm.leave_subsection();
+      AssertThrow(partitioner != "blocks" || type == Type::criss_cross ||
+                    type == Type::diagonal,
+                  ExcMessage("Mesh/Partitioner = blocks needs Mesh/Type = "
+                             "criss-cross or diagonal, got Mesh/Type = " +
+                             t + "."));
       AssertThrow(!distributed || dim == 2,
                   ExcMessage("Mesh/Distribution = distributed needs "
                              "Geometry/Dimension = 2."));
@@ -134,7 +154,7 @@ namespace psmpm
 
     template <int dim>
     void
-    MeshGenerator<dim>::create(Triangulation<dim> &tria) const
+    MeshGenerator<dim>::check_block_shape() const
     {
       // Blocks far from square make slivers whose geometry is round-off
       // (non-finite results, or a refinement that never ends); coordinates
@@ -156,6 +176,13 @@ namespace psmpm
             ExcMessage(s.str() + ": blocks with sides in a ratio above 1e4 (" +
                        std::to_string(hx) + " x " + std::to_string(hy) + ")."));
         }
+    }
+
+    template <int dim>
+    void
+    MeshGenerator<dim>::create(Triangulation<dim> &tria) const
+    {
+      check_block_shape();
       if constexpr (dim == 1)
         {
           const std::vector<unsigned int> repetitions{blocks_x};

@@ -3,7 +3,8 @@
 // ---------------------------------------------------------------------
 // Mesh/Distribution = distributed on 2 ranks (.mpirun=2): each rank holds
 // its cells and their ghost layer (parallel::fullydistributed), rank 0
-// alone builds the whole mesh. With the same METIS partition as the
+// alone builds the whole mesh (Mesh/Partitioner = metis; the block
+// partition is distributed_mesh_02's). With the same METIS partition as the
 // replicated mesh, the runs repeat the replicated ones: statistics.txt
 // equal in every column but wall time, for particles that cross between
 // ranks (column collapse), the automatic mass matrix on a free body (the
@@ -48,6 +49,8 @@ namespace
         args.insert(args.end(),
                     {"--set",
                      "Output directory=" + dir,
+                     "--set",
+                     "Mesh/Partitioner=metis",
                      "--set",
                      std::string("Mesh/Distribution=") +
                        (k == 0 ? "replicated" : "distributed")});
@@ -186,6 +189,7 @@ main(int argc, char **argv)
                              "Body force/Gravity=0, 0",
                              "Mass matrix/Type=lumped",
                              "Mesh/Distribution=distributed",
+                             "Mesh/Partitioner=metis",
                              "Output directory=too_far"}),
                  screen,
                  errors);

@@ -67,9 +67,13 @@ namespace psmpm
        * them: the cells sharing a vertex with one, and with two also the
        * cells sharing a vertex with those (a Powell-Sabin function of a
        * cell of the first layer is built from the cells around its
-       * vertices). Rank 0 alone builds the whole mesh, partitions it
-       * with METIS (as parallel::shared does) and sends every rank its
-       * part, so no other rank ever holds the whole mesh. The faces that
+       * vertices). The block meshes (criss-cross, diagonal) with
+       * Mesh/Partitioner = automatic or blocks: every rank describes its
+       * own part (a BlockPartition tile) from the mesh's parameters, and
+       * no rank holds the whole mesh. Otherwise (Gmsh, cartesian,
+       * Mesh/Partitioner = metis, or ranks that do not tile the blocks):
+       * rank 0 alone builds the whole mesh, partitions it with METIS (as
+       * parallel::shared does) and sends every rank its part. The faces that
        * bound the ghost layer but not the mesh get rim_boundary_id
        * (deal.II would give them boundary id 0, which a scene may fix).
        * Collective; an error in the mesh (a bad Gmsh file) is thrown on
@@ -118,8 +122,28 @@ namespace psmpm
       std::string  file;
       /// Mesh/Distribution = distributed.
       bool distributed = false;
+      /// Mesh/Partitioner: automatic, blocks or metis.
+      std::string partitioner = "automatic";
 
     private:
+      /// The checks of a block mesh's shape that create() makes.
+      void
+      check_block_shape() const;
+
+      /// create_distributed() with every rank describing its BlockPartition
+      /// tile; false (nothing done) where that does not apply.
+      bool
+      create_distributed_blocks(
+        parallel::fullydistributed::Triangulation<dim> &tria,
+        const unsigned int                              ghost_layers,
+        std::vector<unsigned int>                      &owner) const;
+
+      /// create_distributed() from the whole mesh on rank 0 (METIS).
+      std::vector<unsigned int>
+      create_distributed_on_root(
+        parallel::fullydistributed::Triangulation<dim> &tria,
+        const unsigned int                              ghost_layers) const;
+
       mutable std::map<std::string, types::boundary_id> names;
     };
   } // namespace Mesh
