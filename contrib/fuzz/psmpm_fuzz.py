@@ -707,7 +707,9 @@ def checkpoint_cases(scene, other):
         args = [a.replace(b"{scene}", scene_args.file.encode()) for a in base_args(scene_args)]
         subprocess.run([PSMPM] + args, cwd=d, stdout=subprocess.DEVNULL,
                        stderr=subprocess.DEVNULL, timeout=60)
-        cp = [f for f in os.listdir(os.path.join(d, OUT)) if f.startswith("checkpoint-")]
+        out = os.path.join(d, OUT)
+        cp = [f for f in os.listdir(out) if f.startswith("checkpoint-")] \
+            if os.path.isdir(out) else []
         return os.path.join(d, OUT, sorted(cp)[-1]) if cp else None
 
     def damage(fn, source=None):
@@ -973,6 +975,8 @@ def main():
     PSMPM = os.path.abspath(a.psmpm)
     ENV = dict(os.environ)
     ENV.pop("PSMPM_FAIL_WRITE_AT", None)
+    # Absolute: every case runs in a directory of its own.
+    a.scenes = os.path.abspath(a.scenes)
     scenes = [Scene(os.path.join(a.scenes, f)) for f in sorted(os.listdir(a.scenes))
               if f.endswith(".prm")]
     cases = all_cases(scenes, a.every_scene)
