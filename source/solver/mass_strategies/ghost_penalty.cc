@@ -178,7 +178,6 @@ namespace psmpm
           const double     *sampled = fill.data() + (cap ? n_c : 0);
           const auto       &active  = grid.lumped_mass();
           const double      rho     = grid.reference_density();
-          auto             &blocks  = grid.patch_blocks();
           std::vector<bool> treated(active.size(), false);
           for (auto &f : faces)
             {
@@ -196,20 +195,7 @@ namespace psmpm
               // polynomial extension.
               if (!(fill[f.cells[0]] > 0 && fill[f.cells[1]] > 0))
                 continue;
-              if (f.generation != grid.sparsity_generation())
-                {
-                  grid.patch_slots(f.dofs.data(), f.dofs.size(), f.slots);
-                  f.generation = grid.sparsity_generation();
-                }
-              typename GridSystem<dim>::PatchBlock b;
-              b.dofs   = f.dofs.data();
-              b.n      = f.dofs.size();
-              b.values = &f.S(0, 0);
-              b.weight = w;
-              b.slots  = f.slots.empty() ? nullptr : f.slots.data();
-              blocks.push_back(b);
-              for (const unsigned int l : f.dofs)
-                treated[l] = true;
+              add_block(grid, f, w, treated);
             }
           penalize_lone_cells(grid, fill.data(), sampled, treated);
           unsigned int n_treated = 0;
@@ -224,6 +210,31 @@ namespace psmpm
 
       private:
         struct Face;
+
+        /// Adds @p f's block with weight @p w to the grid's patch blocks
+        /// (its slots recomputed when the sparsity changed) and marks its
+        /// DoFs as treated.
+        void
+        add_block(GridSystem<dim>   &grid,
+                  Face              &f,
+                  const double       w,
+                  std::vector<bool> &treated) const
+        {
+          if (f.generation != grid.sparsity_generation())
+            {
+              grid.patch_slots(f.dofs.data(), f.dofs.size(), f.slots);
+              f.generation = grid.sparsity_generation();
+            }
+          typename GridSystem<dim>::PatchBlock b;
+          b.dofs   = f.dofs.data();
+          b.n      = f.dofs.size();
+          b.values = &f.S(0, 0);
+          b.weight = w;
+          b.slots  = f.slots.empty() ? nullptr : f.slots.data();
+          grid.patch_blocks().push_back(b);
+          for (const unsigned int l : f.dofs)
+            treated[l] = true;
+        }
 
         /**
          * A cell that holds particles while no cell sharing a vertex with
@@ -259,20 +270,7 @@ namespace psmpm
               if (!alone)
                 continue;
               Face &f = lone_cell(grid, c);
-              if (f.generation != grid.sparsity_generation())
-                {
-                  grid.patch_slots(f.dofs.data(), f.dofs.size(), f.slots);
-                  f.generation = grid.sparsity_generation();
-                }
-              typename GridSystem<dim>::PatchBlock b;
-              b.dofs   = f.dofs.data();
-              b.n      = f.dofs.size();
-              b.values = &f.S(0, 0);
-              b.weight = w;
-              b.slots  = f.slots.empty() ? nullptr : f.slots.data();
-              grid.patch_blocks().push_back(b);
-              for (const unsigned int l : f.dofs)
-                treated[l] = true;
+              add_block(grid, f, w, treated);
             }
         }
 
