@@ -335,13 +335,21 @@ namespace psmpm
               delta[i] = cells.mass[i] - delta[i];
         }
 
-        /// Zero the momentum sums of a projection.
-        void
+        /// Zero the momentum sums of a projection; returns where a pass
+        /// adds them (the affine momentum, and the consistent momentum in
+        /// the cell right-hand sides if the strategy has a matrix).
+        ApicLoops::CellSums<dim>
         start_momentum(State<dim> &state)
         {
           state.grid->zero_cell_rhs();
-          affine_momentum.assign(state.grid->cell_arrays().rhs.size(),
-                                 Tensor<1, dim>());
+          auto &cells = state.grid->cell_arrays();
+          affine_momentum.assign(cells.rhs.size(), Tensor<1, dim>());
+          const bool consistent = !cells.mass.empty();
+          return {nullptr,
+                  nullptr,
+                  affine_momentum.data(),
+                  consistent ? cells.rhs.data() : nullptr,
+                  nullptr};
         }
 
         /// The grid momentum of the particles' affine fields into the cell
@@ -383,18 +391,10 @@ namespace psmpm
         void
         affine_momentum_to_grid(State<dim> &state, const AffineField &field)
         {
-          start_momentum(state);
-          const auto                    &particles  = state.particles;
-          auto                          &cells      = state.grid->cell_arrays();
-          const bool                     consistent = !cells.mass.empty();
-          const ApicLoops::CellSums<dim> sums{nullptr,
-                                              nullptr,
-                                              affine_momentum.data(),
-                                              consistent ? cells.rhs.data() :
-                                                           nullptr,
-                                              nullptr};
-          const ApicLoops::Grid<dim>     grid = grid_view(state);
-          const unsigned int             n    = state.grid->dofs_per_cell;
+          const ApicLoops::CellSums<dim> sums      = start_momentum(state);
+          const auto                    &particles = state.particles;
+          const ApicLoops::Grid<dim>     grid      = grid_view(state);
+          const unsigned int             n         = state.grid->dofs_per_cell;
           for (std::size_t p = 0; p < particles.size(); ++p)
             {
               Tensor<1, dim> v;
@@ -521,15 +521,7 @@ namespace psmpm
         void
         accelerate_particles(State<dim> &state)
         {
-          start_momentum(state);
-          auto                          &cells      = state.grid->cell_arrays();
-          const bool                     consistent = !cells.mass.empty();
-          const ApicLoops::CellSums<dim> sums{nullptr,
-                                              nullptr,
-                                              affine_momentum.data(),
-                                              consistent ? cells.rhs.data() :
-                                                           nullptr,
-                                              nullptr};
+          const ApicLoops::CellSums<dim> sums = start_momentum(state);
           const bool fit  = mode == AffineMatrix::control_points;
           const bool flip = flip_fraction > 0;
           const auto run  = [&](const auto fit_c, const auto flip_c) {
