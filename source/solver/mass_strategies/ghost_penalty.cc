@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace psmpm
 {
@@ -259,6 +261,7 @@ namespace psmpm
         {
           const double gamma = grid.strategy_parameters().stabilization;
           const double rho   = grid.reference_density();
+          lone_now.clear();
           for (const unsigned int c : grid.owned_cells())
             {
               const double w = gamma * rho * (1. - sampled[c]);
@@ -267,46 +270,56 @@ namespace psmpm
               bool alone = true;
               for (const unsigned int k : neighbours[c])
                 alone = alone && !(fill[k] > 0);
-              if (!alone)
-                continue;
-              Face &f = lone_cell(grid, c);
-              add_block(grid, f, w, treated);
+              if (alone)
+                lone_now.emplace_back(c, w);
             }
+          if (lone_now.empty())
+            return;
+          compute_lone_patches(grid);
+          for (const auto &[c, w] : lone_now)
+            add_block(grid, lone[c], w, treated);
         }
 
-        /// The patch of the lone cell @p c: its DoFs and the complement
-        /// of the constants on it (computed at its first use).
-        Face &
-        lone_cell(const GridSystem<dim> &grid, const unsigned int c)
+        /// The patches of the cells in lone_now that have none yet: their
+        /// DoFs and the complement of the constants on each, in one pass
+        /// over the cells (a fragmenting body makes many lone cells in a
+        /// step).
+        void
+        compute_lone_patches(const GridSystem<dim> &grid)
         {
-          Face &f = lone[c];
-          if (!f.dofs.empty())
-            return f;
-          const auto        &dh = grid.get_dof_handler();
-          const unsigned int n  = grid.dofs_per_cell;
+          std::vector<bool> wanted(lone.size(), false);
+          bool              any = false;
+          for (const auto &cw : lone_now)
+            if (lone[cw.first].dofs.empty())
+              any = wanted[cw.first] = true;
+          if (!any)
+            return;
+          const auto                          &dh = grid.get_dof_handler();
+          const unsigned int                   n  = grid.dofs_per_cell;
+          std::vector<types::global_dof_index> dofs(n);
+          std::vector<unsigned int>            identity(n);
+          for (unsigned int k = 0; k < n; ++k)
+            identity[k] = k;
           for (const auto &cell : dh.active_cell_iterators())
-            if (cell->active_cell_index() == c)
-              {
-                std::vector<types::global_dof_index> dofs(n);
-                cell->get_dof_indices(dofs);
-                std::vector<unsigned int> identity(n);
-                for (unsigned int k = 0; k < n; ++k)
-                  {
-                    identity[k] = k;
-                    f.dofs.push_back(
-                      grid.relevant_dofs().index_within_set(dofs[k]));
-                  }
-                f.cells = {{c, c}};
-                f.S     = polynomial_complement(grid.get_space(),
-                                            dh,
-                                            {c},
-                                            {identity},
-                                            n,
-                                            0,
-                                            cell->center(),
-                                            cell->diameter());
-              }
-          return f;
+            {
+              const unsigned int c = cell->active_cell_index();
+              if (!wanted[c])
+                continue;
+              Face &f = lone[c];
+              cell->get_dof_indices(dofs);
+              for (unsigned int k = 0; k < n; ++k)
+                f.dofs.push_back(
+                  grid.relevant_dofs().index_within_set(dofs[k]));
+              f.cells = {{c, c}};
+              f.S     = polynomial_complement(grid.get_space(),
+                                          dh,
+                                          {c},
+                                          {identity},
+                                          n,
+                                          0,
+                                          cell->center(),
+                                          cell->diameter());
+            }
         }
 
         struct Face
@@ -402,6 +415,8 @@ namespace psmpm
         /// Patches of lone cells (penalize_lone_cells()), by cell; empty
         /// until a cell is alone.
         std::vector<Face> lone;
+        /// The lone cells of this step and their weights.
+        std::vector<std::pair<unsigned int, double>> lone_now;
       };
     } // namespace
 
