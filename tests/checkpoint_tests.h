@@ -54,25 +54,31 @@ inline std::vector<std::string>
 differing_entries(const psmpm::Archive &a, const psmpm::Archive &b)
 {
   std::vector<std::string> differ;
-  for (const auto &[name, e] : a.get_entries())
+  for (const auto &[full_name, e] : a.get_entries())
     {
+      // The state before the last step is compared as the checkpoint is.
+      const std::string prefix =
+        psmpm::Simulator::Checkpoint::before_last_step_prefix;
+      const std::string name = full_name.rfind(prefix, 0) == 0 ?
+                                 full_name.substr(prefix.size()) :
+                                 full_name;
       if (name == "simulator/wall_time" || name == "simulator/statistics" ||
           name == "psmpm/n_mpi_ranks")
         continue;
-      if (name == "psmpm/parameters" && b.has(name))
+      if (name == "psmpm/parameters" && b.has(full_name))
         {
           if (!psmpm::Simulator::Checkpoint::parameter_differences(e.data,
                                                                    b.get_text(
-                                                                     name))
+                                                                     full_name))
                  .empty())
-            differ.push_back(name);
+            differ.push_back(full_name);
           continue;
         }
-      const auto it = b.get_entries().find(name);
+      const auto it = b.get_entries().find(full_name);
       if (it == b.get_entries().end() || it->second.reals != e.reals ||
           it->second.integers != e.integers || it->second.data != e.data ||
           it->second.shape != e.shape)
-        differ.push_back(name);
+        differ.push_back(full_name);
     }
   for (const auto &[name, e] : b.get_entries())
     if (a.get_entries().count(name) == 0)
@@ -232,6 +238,135 @@ check_resume(std::ostream            &out,
               !read_file(a + grid).empty() &&
                 without_date(read_file(a + grid)) ==
                   without_date(read_file(b + grid)));
+}
+
+
+/// summary.json without what differs between any two runs of a scene
+/// (timings, throughput) and the keys of a resumed run (resumed_from,
+/// resumed_step).
+inline std::string
+summary_without_timings(const std::string &json)
+{
+  std::istringstream in(json);
+  std::string        line, kept;
+  bool               timers = false;
+  for (; std::getline(in, line);)
+    {
+      if (line.find("\"timers_s\"") != std::string::npos)
+        timers = true;
+      const bool skip =
+        timers || line.find("_s\":") != std::string::npos ||
+        line.find("\"particle_steps_per_second\"") != std::string::npos ||
+        line.find("\"resumed_") != std::string::npos;
+      if (timers && line.find('}') != std::string::npos)
+        timers = false;
+      if (!skip)
+        kept += line + "\n";
+    }
+  return kept;
+}
+
+/// The files of directory @p d but checkpoints, log.txt and
+/// parameters.prm (which name the directory), sorted.
+inline std::vector<std::string>
+output_files(const std::string &d)
+{
+  std::vector<std::string> names;
+  for (const auto &entry : std::filesystem::directory_iterator(d))
+    {
+      const std::string n = entry.path().filename().string();
+      if (!psmpm::Simulator::Checkpoint::is_checkpoint_file(n) &&
+          n != "log.txt" && n != "parameters.prm" && n != "psmpm.lock")
+        names.push_back(n);
+    }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/**
+ * Run @p scene to Time/End time = @p end, then resume it with the later
+ * End time @p later, and run it to @p later from the start: the resumed
+ * run restarts from the state before the first run's last step (cut to
+ * land on @p end) and must leave the same files bit for bit (statistics
+ * but for wall_time, .pvd series, every VTU file and no other, tracked
+ * particle, summary.json but for timings, final checkpoint).
+ */
+inline void
+check_extended_resume(std::ostream            &out,
+                      const std::string       &name,
+                      std::vector<std::string> scene,
+                      const std::string       &end,
+                      const std::string       &later)
+{
+  const std::string a = name + "_straight", b = name + "_extended";
+  std::filesystem::remove_all(a);
+  std::filesystem::remove_all(b);
+  const auto run = [&](const std::string &d,
+                       const std::string &end_time,
+                       const bool         resume) {
+    std::vector<std::string> args = scene;
+    args.insert(
+      args.end(),
+      {"--set", "Output directory=" + d, "--set", "Time/End time=" + end_time});
+    if (resume)
+      args.push_back("--resume");
+    std::string screen, message;
+    const int   code = run_app(args, screen, message);
+    if (code != 0)
+      out << message << std::endl;
+    return code;
+  };
+  const int          straight    = run(a, later, false);
+  const int          first       = run(b, end, false);
+  const auto         files       = psmpm::Simulator::Checkpoint::list(b);
+  const unsigned int first_steps = files.empty() ? 0 : step_of(files[0]);
+  const int          resumed     = run(b, later, true);
+  out << name << ": exit codes " << straight << " " << first << " " << resumed
+      << "; first run " << first_steps << " steps" << std::endl;
+  if (straight != 0 || first != 0 || resumed != 0)
+    return;
+  // Resumed from the state before the first run's last step.
+  const std::string summary = read_file(b + "/summary.json");
+  PSMPM_CHECK(out,
+              summary.find("\"resumed_step\": " +
+                           std::to_string(first_steps - 1)) !=
+                std::string::npos);
+  PSMPM_CHECK(out,
+              summary_without_timings(read_file(a + "/summary.json")) ==
+                summary_without_timings(summary));
+
+  const auto rows_a = statistics_rows(a + "/statistics.txt");
+  const auto rows_b = statistics_rows(b + "/statistics.txt");
+  out << name << ": statistics rows " << rows_a.size() << " and "
+      << rows_b.size() << std::endl;
+  PSMPM_CHECK(out, rows_a == rows_b);
+  PSMPM_CHECK(out, output_files(a) == output_files(b));
+  unsigned int compared = 0, differing = 0;
+  for (const auto &f : output_files(a))
+    if (f != "summary.json" && f != "statistics.txt")
+      {
+        ++compared;
+        if (without_date(read_file(a + "/" + f)) !=
+            without_date(read_file(b + "/" + f)))
+          {
+            ++differing;
+            out << "  differs: " << f << std::endl;
+          }
+      }
+  out << name << ": output files compared " << compared << ", differing "
+      << differing << std::endl;
+  PSMPM_CHECK(out, compared > 0 && differing == 0);
+
+  const std::string final_name =
+    "/" + psmpm::Simulator::Checkpoint::file_name(
+            step_of(psmpm::Simulator::Checkpoint::list(a)[0]));
+  const auto differ =
+    differing_entries(psmpm::Archive::read_hdf5(a + final_name),
+                      psmpm::Archive::read_hdf5(b + final_name));
+  out << name << ": final checkpoint entries differing: " << differ.size()
+      << std::endl;
+  for (const auto &d : differ)
+    out << "  differs: " << d << std::endl;
 }
 
 

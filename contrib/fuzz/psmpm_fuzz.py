@@ -15,8 +15,9 @@ special files, stale or garbled lock files).
 
 The oracle, for every run:
   * exit 0: summary.json valid JSON with finite numbers and status
-    "completed", statistics.txt finite, every VTU/PVD file complete, no
-    lock file or temporary file left;
+    "completed", statistics.txt not empty, no inf or nan in a table
+    (statistics.txt, tracked_particle.txt, solver_study.tsv), every
+    VTU/PVD file complete, no lock file or temporary file left;
   * exit 2: one message that names the entry (or the file) the case
     changed, no deal.II source location or stack trace, and nothing
     written: a new output directory does not exist, an existing one
@@ -262,7 +263,9 @@ def value_cases(scenes, every_scene=False):
                     scene,
                     base_args(scene) + [b"--set", path.encode() + b"=" + value],
                     [entry])
-                if path == "Output directory":
+                # An empty name leaves OUT of the first --set, which must
+                # not be created (the case's own directory is no output).
+                if path == "Output directory" and value.strip():
                     c.out = value.strip()
                 cases.append(c)
                 if not every_scene and kind in kinds_in_file:
@@ -830,6 +833,9 @@ def strict_json(text):
 
 
 def numbers_finite(obj):
+    # psmpm writes a number that is not finite as null.
+    if obj is None:
+        return False
     if isinstance(obj, float):
         return math.isfinite(obj)
     if isinstance(obj, dict):
@@ -843,6 +849,21 @@ def listing(d):
     if not os.path.isdir(d) or os.path.islink(d):
         return None
     return sorted(os.listdir(d))
+
+
+def table_rows(path):
+    """The data rows of a text table (lines that are not empty and do not
+    start with #) and its first inf or nan entry, or None."""
+    rows, token = 0, None
+    with open(path, "rb") as f:
+        for line in f:
+            if line.startswith(b"#") or not line.strip():
+                continue
+            rows += 1
+            for tok in line.split():
+                if token is None and re.match(rb"^[-+]?(nan|inf)", tok, re.I):
+                    token = tok.decode("utf-8", "replace")
+    return rows, token
 
 
 def check_completed(out):
@@ -859,21 +880,16 @@ def check_completed(out):
     except (OSError, ValueError, UnicodeDecodeError) as e:
         problems.append("silent: exit 0 without a valid summary.json (%s)" % e)
     stats = os.path.join(out, b"statistics.txt")
-    if os.path.isfile(stats):
-        rows = 0
-        with open(stats, "rb") as f:
-            for line in f:
-                if line.startswith(b"#") or not line.strip():
-                    continue
-                rows += 1
-                for tok in line.split():
-                    if re.match(rb"^[-+]?(nan|inf)", tok, re.I):
-                        problems.append("silent: exit 0 with %s in statistics.txt" % tok.decode())
-                        break
-        if rows == 0:
-            problems.append("silent: exit 0 with an empty statistics.txt")
+    if os.path.isfile(stats) and table_rows(stats)[0] == 0:
+        problems.append("silent: exit 0 with an empty statistics.txt")
     for name in listing(out) or []:
         p = os.path.join(out, name)
+        # Every table a run writes (statistics.txt, tracked_particle.txt,
+        # solver_study.tsv): a row with inf or nan is no result.
+        if name.endswith((b".txt", b".tsv")) and name != b"log.txt" and os.path.isfile(p):
+            token = table_rows(p)[1]
+            if token:
+                problems.append("silent: exit 0 with %s in %s" % (token, name.decode()))
         if name == b"psmpm.lock":
             problems.append("stale: lock left after exit 0")
         elif name.endswith(b".tmp"):

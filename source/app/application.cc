@@ -693,6 +693,28 @@ end
         summary.set("version", version());
       }
 
+      /**
+       * A completed run whose summary holds a number that is not finite
+       * (an error norm or a sum beyond double range, written as null) has
+       * no result: its status becomes unstable, the key is the reason,
+       * and the exit code is that of non-finite values (3). Returns that
+       * code, or none if every number is finite.
+       */
+      std::optional<int>
+      refuse_non_finite(Summary &summary, const bool root)
+      {
+        const std::string key = summary.non_finite_key();
+        if (key.empty())
+          return std::nullopt;
+        const std::string reason = "non-finite value in summary.json: " + key;
+        summary.set("status", "unstable");
+        summary.set("reason", reason);
+        if (root)
+          std::cerr << "psmpm: UNSTABLE: " << reason << "\n";
+        return Simulator::failure_info(Simulator::Failure::non_finite)
+          .exit_code;
+      }
+
       /// Run the set-up Problem into its open output directory: screen
       /// lines, parameters.prm, the Problem's output, summary.json; the
       /// exit code.
@@ -720,6 +742,10 @@ end
             scene.problem->announce(root && !test_output);
             write_parameters(prm, dir, comm, root);
             const auto status = scene.problem->run(dir, summary, comm);
+            const auto non_finite =
+              status == Simulator::Status::completed ?
+                refuse_non_finite(summary, root) :
+                std::nullopt;
             add_run_information(summary, wall, parameter_file);
             write_on_root([&]() { summary.write(dir + "/summary.json"); },
                           comm,
@@ -737,7 +763,7 @@ end
                 else
                   std::cout << "psmpm: " << summary.to_json();
               }
-            return scene.problem->exit_code(status);
+            return non_finite ? *non_finite : scene.problem->exit_code(status);
           }
         catch (const ExcWriteFailed &e)
           {

@@ -265,7 +265,9 @@ namespace psmpm
                        ": Problem = l2 projection runs on "
                        "triangles only (a basis of "
                        "triangles: linear or powell-sabin)."));
-          projection.check_scene(mesh, basis);
+          // The whole projection: a function that double numbers cannot
+          // project is bad input, reported before any output is written.
+          projection.prepare(mesh, basis);
         }
 
         Simulator::Status
@@ -274,8 +276,28 @@ namespace psmpm
             MPI_Comm              comm) override
         {
           projection.run(mesh, basis, output_directory, summary, comm);
-          summary.set("status", "completed");
-          return Simulator::Status::completed;
+          const std::string failure = projection.failure();
+          if (failure.empty())
+            {
+              summary.set("status", "completed");
+              return Simulator::Status::completed;
+            }
+          // As a simulation whose mass matrix solver fails: the reason on
+          // the screen and in summary.json, exit code 7.
+          summary.set("status", "unstable");
+          summary.set("reason", failure);
+          if (Utilities::MPI::this_mpi_process(comm) == 0)
+            std::cerr << "psmpm: " << failure << "\n";
+          return Simulator::Status::unstable;
+        }
+
+        int
+        exit_code(const Simulator::Status status) const override
+        {
+          return status == Simulator::Status::completed ?
+                   success :
+                   Simulator::failure_info(Simulator::Failure::solver)
+                     .exit_code;
         }
 
         TestOutputKeys

@@ -154,11 +154,15 @@ namespace psmpm
     {
       if (allow_large_runs)
         return;
-      AssertThrow(size.steps <= max_steps,
-                  ExcMessage("Time/End time and the time step ask for " +
-                             prm_value(size.steps) +
-                             " steps, more than Limits/Maximum steps = " +
-                             prm_value(max_steps) + "." + override_hint));
+      // The message names what sets the step: the entry of a fixed step,
+      // else the material whose wave speed makes it small.
+      AssertThrow(
+        size.steps <= max_steps,
+        ExcMessage("Time/End time = " + prm_value(size.end_time) + " and " +
+                   (size.time_step.empty() ? "the time step" : size.time_step) +
+                   " ask for " + prm_value(size.steps) +
+                   " steps, more than Limits/Maximum steps = " +
+                   prm_value(max_steps) + "." + override_hint));
       AssertThrow(size.output_bytes <= max_output_gb * 1073741824.,
                   ExcMessage(
                     "the run would write about " + gb(size.output_bytes) +

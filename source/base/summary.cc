@@ -116,6 +116,15 @@ namespace psmpm
       }
   }
 
+  std::string
+  Summary::non_finite_key() const
+  {
+    for (const auto &[key, value] : numbers)
+      if (!std::isfinite(value))
+        return key;
+    return "";
+  }
+
   void
   Summary::set(const std::string &key, const std::string &value)
   {

@@ -4,6 +4,7 @@
 #include <psmpm/base/format.h>
 #include <psmpm/material/material.h>
 
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -143,6 +144,17 @@ namespace psmpm
                              ": must satisfy -1 < nu < 0.5 (0.5 is "
                              "incompressible, which this explicit "
                              "formulation cannot represent)."));
+      // The moduli and the wave speed derived from them: one beyond the
+      // range of double numbers gives a time step of 0 or inf.
+      const double c_p = p_wave_speed();
+      AssertThrow(
+        std::isfinite(p_wave_modulus()) && std::isfinite(c_p) && c_p > 0,
+        ExcMessage(path + "/Young's modulus = " + prm_value(youngs_modulus) +
+                   " with Poisson's ratio = " + prm_value(poisson_ratio) +
+                   " and Density = " + prm_value(density) +
+                   ": the p-wave modulus (" + prm_value(p_wave_modulus()) +
+                   ") or the p-wave speed (" + prm_value(c_p) +
+                   ") is beyond the range of double numbers."));
     }
 
 

@@ -2,12 +2,15 @@
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_in.h>
 
+#include <psmpm/base/root_errors.h>
 #include <psmpm/mesh/gmsh_file.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -283,6 +286,26 @@ namespace psmpm
         std::vector<long long>              ids;
         std::vector<std::vector<long long>> element_nodes;
       };
+
+      /// The 64-bit FNV-1a checksum of the bytes of @p file (0 if it
+      /// cannot be read: check_msh() has said why by then).
+      std::uint64_t
+      checksum_of(const std::string &file)
+      {
+        std::ifstream     in(file, std::ios::binary);
+        std::uint64_t     hash = 14695981039346656037ull;
+        std::vector<char> block(1 << 16);
+        while (in)
+          {
+            in.read(block.data(), block.size());
+            for (std::streamsize k = 0; k < in.gcount(); ++k)
+              {
+                hash ^= static_cast<unsigned char>(block[k]);
+                hash *= 1099511628211ull;
+              }
+          }
+        return in.bad() ? 0 : hash;
+      }
     } // namespace
 
 
@@ -295,6 +318,44 @@ namespace psmpm
       AssertThrow(in.good(),
                   dealii::ExcMessage(where + ": cannot open the file."));
       MshChecker(in, where).run();
+    }
+
+
+
+    void
+    check_msh_on_all_ranks(const std::string &file,
+                           const std::string &where,
+                           const MPI_Comm     comm)
+    {
+      const unsigned int n_ranks =
+        dealii::Utilities::MPI::n_mpi_processes(comm);
+      if (n_ranks == 1)
+        return check_msh(file, where);
+      std::string error;
+      try
+        {
+          check_msh(file, where);
+        }
+      catch (const std::exception &e)
+        {
+          error = error_text(e);
+        }
+      const auto errors = dealii::Utilities::MPI::all_gather(comm, error);
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        AssertThrow(errors[r].empty(),
+                    dealii::ExcMessage("on rank " + std::to_string(r) + ": " +
+                                       errors[r]));
+      // Every rank reads the file for itself: different bytes (another
+      // file under the same name) would give the ranks different meshes.
+      const auto sums =
+        dealii::Utilities::MPI::all_gather(comm, checksum_of(file));
+      for (unsigned int r = 1; r < n_ranks; ++r)
+        AssertThrow(sums[r] == sums[0],
+                    dealii::ExcMessage(
+                      where + ": rank 0 and rank " + std::to_string(r) +
+                      " read different content (another file under this "
+                      "name, or the file changed while being read); every "
+                      "rank must read the same mesh file."));
     }
 
 

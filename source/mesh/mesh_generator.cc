@@ -94,7 +94,7 @@ namespace psmpm
 
     template <int dim>
     void
-    MeshGenerator<dim>::parse_parameters(ParameterHandler &prm)
+    MeshGenerator<dim>::parse_parameters(ParameterHandler &prm, MPI_Comm comm)
     {
       prm.enter_subsection("Geometry");
       length = prm.get_double("Length");
@@ -146,8 +146,9 @@ namespace psmpm
               AssertThrow(!file.empty(),
                           ExcMessage("Mesh/File must name a .msh file when "
                                      "Mesh/Type = gmsh."));
-              // Refused here, before anything opens it (a FIFO blocks).
-              check_msh(file, "Mesh/File = " + file);
+              // Refused here, before anything opens it (a FIFO blocks),
+              // on every rank if one rank cannot read it.
+              check_msh_on_all_ranks(file, "Mesh/File = " + file, comm);
             }
         }
     }

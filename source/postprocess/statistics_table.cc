@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <sstream>
 
@@ -172,6 +173,19 @@ namespace psmpm
       c.kinds.push_back(StatisticsTable::text);
       c.bits.push_back(c.texts.size());
       c.texts.push_back(text);
+    }
+
+    std::string
+    StatisticsTable::non_finite_in_last_entries() const
+    {
+      for (const Column &c : columns)
+        if (!c.kinds.empty() && c.kinds.back() == real &&
+            !std::isfinite(double_of(c.bits.back())))
+          return c.name + " = " +
+                 (std::isnan(double_of(c.bits.back())) ? "nan" :
+                  double_of(c.bits.back()) > 0         ? "inf" :
+                                                         "-inf");
+      return "";
     }
 
     void

@@ -236,6 +236,33 @@ namespace psmpm
           *sizes_out = sizes;
         return all;
       }
+
+      /// Entry @p e of another archive into @p archive as @p name.
+      void
+      copy_entry(const Archive::Entry &e,
+                 const std::string    &name,
+                 Archive              &archive)
+      {
+        switch (e.type)
+          {
+            case Archive::Type::real:
+              archive.put(name,
+                          e.reals,
+                          e.shape.size() == 2 ?
+                            static_cast<unsigned int>(e.shape[1]) :
+                            0);
+              break;
+            case Archive::Type::integer:
+              archive.put_integers(name, e.integers);
+              break;
+            case Archive::Type::bytes:
+              archive.put_bytes(name, e.data);
+              break;
+            case Archive::Type::text:
+              archive.put_text(name, e.data);
+              break;
+          }
+      }
     } // namespace
 
 
@@ -323,12 +350,45 @@ namespace psmpm
 
 
     void
+    Checkpoint::keep_state_before_last_step(Archive          &&archive,
+                                            const unsigned int step)
+    {
+      before_last_step        = std::move(archive);
+      before_last_step_number = step;
+    }
+
+
+
+    bool
+    Checkpoint::restart_before_last_step(Archive &archive)
+    {
+      const std::string prefix = before_last_step_prefix;
+      if (!archive.has(prefix + "simulator/step"))
+        return false;
+      Archive before;
+      for (const auto &[name, e] : archive.get_entries())
+        if (name.rfind(prefix, 0) == 0)
+          copy_entry(e, name.substr(prefix.size()), before);
+      archive = std::move(before);
+      return true;
+    }
+
+
+
+    void
     Checkpoint::write(const std::string &directory,
                       const unsigned int step,
-                      const Archive     &archive,
+                      Archive           &archive,
                       MPI_Comm           comm)
     {
       std::string error;
+      if (!before_last_step.get_entries().empty() &&
+          step == before_last_step_number + 1)
+        {
+          for (const auto &[name, e] : before_last_step.get_entries())
+            copy_entry(e, before_last_step_prefix + name, archive);
+          before_last_step = Archive();
+        }
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         {
           const std::string file = directory + "/" + file_name(step);

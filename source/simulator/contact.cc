@@ -120,8 +120,9 @@ namespace psmpm
         "bodies share one grid velocity and stick where their supports "
         "overlap. 'multi-velocity': every body has its own grid velocity, "
         "and approaching bodies at a node are corrected against their "
-        "centre of mass with Coulomb friction (doc/contact.md; the nodal "
-        "algorithm only: not wired into the transfers yet).");
+        "centre of mass with Coulomb friction (doc/contact.md): with "
+        "Transfer/Scheme musl and Mass matrix/Type lumped, which "
+        "automatic then selects.");
       prm.declare_entry(
         "Friction coefficient",
         "0",
@@ -316,7 +317,8 @@ namespace psmpm
     Contact<dim>::correct_node(
       ContactFields<dim>                      &fields,
       const unsigned int                       i,
-      std::vector<ContactPairStatistics<dim>> &statistics) const
+      std::vector<ContactPairStatistics<dim>> &statistics,
+      const bool                               with_friction) const
     {
       const unsigned int n = fields.n_bodies;
       for (unsigned int a = 0; a < n; ++a)
@@ -343,7 +345,7 @@ namespace psmpm
                            fields.velocity[ia],
                            fields.velocity[ib],
                            normal,
-                           pair_friction[pair],
+                           with_friction ? pair_friction[pair] : 0.,
                            statistics[pair]);
             }
         }
@@ -370,7 +372,40 @@ namespace psmpm
              ExcMessage("The distance criterion needs the mass centres."));
       statistics.assign(pair_friction.size(), ContactPairStatistics<dim>());
       for (unsigned int i = 0; i < n_nodes; ++i)
-        correct_node(fields, i, statistics);
+        correct_node(fields, i, statistics, true);
+    }
+
+    template <int dim>
+    void
+    Contact<dim>::apply(ContactFields<dim>                      &fields,
+                        std::vector<ContactPairStatistics<dim>> &statistics,
+                        const std::vector<char>                 *counted,
+                        const bool with_friction) const
+    {
+      if (counted == nullptr && with_friction)
+        {
+          apply(fields, statistics);
+          return;
+        }
+      std::vector<char> all;
+      if (counted == nullptr)
+        {
+          all.assign(fields.n_nodes(), 1);
+          counted = &all;
+        }
+      AssertDimension(counted->size(), fields.n_nodes());
+      AssertThrow(fields.n_bodies == n_bodies,
+                  ExcMessage("The contact fields have " +
+                             std::to_string(fields.n_bodies) +
+                             " bodies, the scene " + std::to_string(n_bodies) +
+                             "."));
+      statistics.assign(pair_friction.size(), ContactPairStatistics<dim>());
+      std::vector<ContactPairStatistics<dim>> uncounted(statistics);
+      for (unsigned int i = 0; i < fields.n_nodes(); ++i)
+        correct_node(fields,
+                     i,
+                     (*counted)[i] ? statistics : uncounted,
+                     with_friction);
     }
 
     template struct ContactFields<1>;

@@ -6,10 +6,12 @@
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/base/format.h>
+#include <psmpm/material/wave_speed_origin.h>
 #include <psmpm/simulator/simulator.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace psmpm
 {
@@ -22,8 +24,12 @@ namespace psmpm
       RunSize      size;
       const double dt  = time_step_control.get_time_step();
       const double end = time_step_control.get_end_time();
-      size.steps       = dt > 0 ? std::ceil(end / dt) : 0;
-      size.n_cells     = state.triangulation->n_global_active_cells();
+      // A step of 0 (a speed beyond double range) never ends the run.
+      size.steps =
+        dt > 0 ? std::ceil(end / dt) : std::numeric_limits<double>::infinity();
+      size.end_time  = end;
+      size.time_step = describe_time_step();
+      size.n_cells   = state.triangulation->n_global_active_cells();
       size.n_particles =
         Utilities::MPI::sum(double(state.particles.size()), comm);
       size.n_outputs = 2;
@@ -47,6 +53,22 @@ namespace psmpm
                                 100. * size.n_cells * std::max(1., s * s);
       size.output_bytes = size.n_outputs * per_output + 400. * size.steps;
       return size;
+    }
+
+    template <int dim>
+    std::string
+    Simulator<dim>::describe_time_step() const
+    {
+      const double dt = time_step_control.get_time_step();
+      if (!time_step_control.is_automatic())
+        return "Time/Time step = " + prm_value(dt);
+      const std::string origin = Material::wave_speed_origin(state.materials);
+      const double      c_p    = state.materials.max_p_wave_speed();
+      return "the automatic time step " + prm_value(dt) +
+             " s (Time/Courant number times h_min/c_p, with the p-wave "
+             "speed c_p = " +
+             prm_value(c_p) + " m/s" +
+             (origin.empty() ? std::string() : " of " + origin) + ")";
     }
 
     template <int dim>

@@ -23,6 +23,10 @@ namespace psmpm
       total_iterations = archive.get_integer("simulator/cg_iterations");
       time_outputs     = archive.get_integer("simulator/time_outputs");
       wall_offset      = archive.get_number("simulator/wall_time");
+      cell_crossings_offset =
+        archive.has("simulator/cell_crossings") ?
+          archive.get_integer("simulator/cell_crossings") :
+          0;
     }
   } // namespace Simulator
 } // namespace psmpm

@@ -12,6 +12,7 @@
 #include <psmpm/base/stop_request.h>
 #include <psmpm/base/version.h>
 #include <psmpm/mesh/confinement.h>
+#include <psmpm/mesh/gmsh_file.h>
 #include <psmpm/postprocess/progress.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/simulator.h>
@@ -125,6 +126,29 @@ namespace psmpm
         particles.set_capacity(
           Utilities::MPI::n_mpi_processes(comm) > 1 ? n + n / 8 : n);
       }
+
+      /// The Gmsh files of the bodies (Bodies/Body k/File), which every
+      /// rank reads, checked on all ranks before any rank reads them: a
+      /// file one rank cannot read then ends every rank with bad input
+      /// instead of leaving the others waiting.
+      void
+      check_body_files(ParameterHandler &prm, MPI_Comm comm)
+      {
+        prm.enter_subsection("Bodies");
+        const unsigned int n = prm.get_integer("Number of bodies");
+        for (unsigned int b = 1; b <= n; ++b)
+          {
+            const std::string name = "Body " + std::to_string(b);
+            prm.enter_subsection(name);
+            const std::string file = prm.get("File");
+            if (prm.get("Shape") == "gmsh" && !file.empty())
+              Mesh::check_msh_on_all_ranks(file,
+                                           "Bodies/" + name + "/File = " + file,
+                                           comm);
+            prm.leave_subsection();
+          }
+        prm.leave_subsection();
+      }
     } // namespace
 
     template <int dim>
@@ -160,6 +184,7 @@ namespace psmpm
       declare_fixed(prm);
       BoundaryConditions<2>::declare_parameters(prm);
       prm.leave_subsection();
+      ContactCoupling<2>::declare_parameters(prm);
       OutputFiles<2>::declare_parameters(prm);
     }
 
@@ -167,7 +192,9 @@ namespace psmpm
     void
     Simulator<dim>::parse_parameters(ParameterHandler &prm)
     {
-      mesh_generator.parse_parameters(prm);
+      mesh_generator.parse_parameters(prm, comm);
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+        check_body_files(prm, comm);
       particle_generator.parse_parameters(prm);
       particle_generator.check_count(mesh_generator);
       state.materials.parse_parameters(prm, particle_generator.bodies);
@@ -175,7 +202,9 @@ namespace psmpm
       // particles get (the generator reads Body::density).
       for (auto &body : particle_generator.bodies.bodies)
         body.density = state.materials.of_body(body.number).density;
+      contact.parse_parameters(prm, particle_generator.bodies.bodies.size());
       discretisation.parse_parameters(prm);
+      contact.choose_automatic(prm, discretisation.grid_parameters.type);
       // "automatic" takes the space's measured defaults; the choice for a
       // closed, filled mesh is made once the mesh is known
       // (setup_space_and_grid).
@@ -306,6 +335,14 @@ namespace psmpm
                                  transfers.scheme->moves_grid());
       state.boundary_conditions =
         boundary_conditions.active() ? &boundary_conditions : nullptr;
+      contact.check_transfer(transfers.name,
+                             transfers.reconstruction_name,
+                             discretisation.grid_parameters.type);
+      if (contact.enabled())
+        {
+          contact.initialize(state);
+          state.contact = &contact;
+        }
     }
 
     template <int dim>
@@ -521,7 +558,16 @@ namespace psmpm
           total_energy =
             boundary_conditions.monitored_energy(total_energy, state.step);
         }
+      if (state.contact)
+        contact.add_columns(statistics);
       statistics.add_value("wall_time", record.wall_offset + wall_time);
+      // A row with inf or nan (an error norm against a reference beyond
+      // double range, a diverging quantity) is no result: the run stops.
+      const std::string non_finite = statistics.non_finite_in_last_entries();
+      if (!non_finite.empty())
+        monitor.report(Failure::non_finite,
+                       "non-finite value in statistics.txt: " + non_finite +
+                         " at step " + std::to_string(state.step));
       if (monitor.check(total_energy, e.scale, e.momentum, comm) &&
           record.status == Status::completed)
         {
@@ -554,10 +600,15 @@ namespace psmpm
     void
     Simulator<dim>::write_statistics()
     {
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        output.write_statistics(state.boundary_conditions ?
-                                  boundary_conditions.statistics_columns() :
-                                  std::vector<std::string>());
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      std::vector<std::string> columns;
+      if (state.boundary_conditions)
+        columns = boundary_conditions.statistics_columns();
+      if (state.contact)
+        for (const auto &c : contact.statistics_columns())
+          columns.push_back(c);
+      output.write_statistics(columns);
     }
 
     template <int dim>
@@ -669,7 +720,17 @@ namespace psmpm
       while (!time_step_control.finished(state.time) &&
              status == Status::completed)
         {
-          do_time_step(next_time_step());
+          const double dt = next_time_step();
+          // The last step is cut to land on the end time: the checkpoint
+          // at the end also keeps the state before it, from which a resume
+          // with a later end time takes the full step.
+          if (time_step_control.ends_run(state.time, dt))
+            {
+              PhaseTimer::Scope t(timer, "checkpoint");
+              checkpoint.keep_state_before_last_step(checkpoint_archive(),
+                                                     state.step);
+            }
+          do_time_step(dt);
           ++state.step;
           postprocess(record.wall.wall_time());
           if (status == Status::completed &&
@@ -854,7 +915,18 @@ namespace psmpm
     Simulator<dim>::write_checkpoint()
     {
       PhaseTimer::Scope t(timer, "checkpoint");
-      Archive           archive;
+      Archive           archive = checkpoint_archive();
+      checkpoint.write(output.directory, state.step, archive, comm);
+      if (!quiet)
+        pcout << "psmpm: checkpoint " << output.directory << "/"
+              << Checkpoint::file_name(state.step) << std::endl;
+    }
+
+    template <int dim>
+    Archive
+    Simulator<dim>::checkpoint_archive()
+    {
+      Archive archive;
       archive.put_text("psmpm/format", checkpoint_format);
       archive.put_text("psmpm/version", version());
       archive.put_text("psmpm/parameters", scene_text.parameters);
@@ -868,6 +940,10 @@ namespace psmpm
       archive.put_integer("simulator/step", state.step);
       archive.put("simulator/dt", state.dt);
       record.save(archive);
+      archive.put_integer("simulator/cell_crossings",
+                          record.cell_crossings_offset +
+                            Utilities::MPI::sum(relocation.cell_crossings(),
+                                                comm));
       // The rows so far, exactly (doubles, integers and "-" entries with
       // their column formats).
       archive.put_bytes("simulator/statistics", output.statistics.to_bytes());
@@ -877,6 +953,8 @@ namespace psmpm
       postprocessors.save(archive);
       if (state.boundary_conditions)
         boundary_conditions.save(archive);
+      if (state.contact)
+        contact.save(archive);
       output.writer->save(archive);
       transfers.scheme->save(archive, state);
       // The same on every rank where a vertex is seen, 0 elsewhere.
@@ -892,10 +970,7 @@ namespace psmpm
                                    archive,
                                    comm,
                                    state.whole_index);
-      checkpoint.write(output.directory, state.step, archive, comm);
-      if (!quiet)
-        pcout << "psmpm: checkpoint " << output.directory << "/"
-              << Checkpoint::file_name(state.step) << std::endl;
+      return archive;
     }
 
     template <int dim>
@@ -938,6 +1013,11 @@ namespace psmpm
             {
               AssertThrow(damaged.empty(), ExcMessage(damaged));
               check_archive(archive, scene_text);
+              // A later end time: the run continues from the state before
+              // its last step, which was cut to land on the earlier one.
+              if (!time_step_control.finished(
+                    archive.get_number("simulator/time")))
+                Checkpoint::restart_before_last_step(archive);
             }
           catch (const ExceptionBase &e)
             {
@@ -1007,6 +1087,8 @@ namespace psmpm
       postprocessors.load(shared);
       if (state.boundary_conditions)
         boundary_conditions.load(shared);
+      if (state.contact)
+        contact.load(shared);
       output.writer->load(shared);
       state.grid->strategy().restore_history(
         shared.get("mass_strategy/history"));
@@ -1109,8 +1191,9 @@ namespace psmpm
       summary.set_integer("n_mpi_ranks", Utilities::MPI::n_mpi_processes(comm));
       summary.set_integer("cg_iterations", record.total_iterations);
       summary.set_integer("cell_crossings",
-                          Utilities::MPI::sum(relocation.cell_crossings(),
-                                              comm));
+                          record.cell_crossings_offset +
+                            Utilities::MPI::sum(relocation.cell_crossings(),
+                                                comm));
       summary.set("end_time", state.time);
       summary.set("time_step", time_step_control.get_time_step());
       summary.set("time_step_min", time_step_control.get_min_time_step());

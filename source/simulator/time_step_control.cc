@@ -5,6 +5,7 @@
 
 #include <psmpm/base/archive.h>
 #include <psmpm/base/format.h>
+#include <psmpm/material/wave_speed_origin.h>
 #include <psmpm/simulator/time_step_control.h>
 
 namespace psmpm
@@ -75,7 +76,9 @@ namespace psmpm
                                  " exceeds the stability bound h_min/c_p = " +
                                  prm_value(bound) +
                                  " (h_min = " + prm_value(h_min) +
-                                 ", c_p = " + prm_value(c_p) + ")."));
+                                 ", c_p = " + prm_value(c_p) + " of " +
+                                 Material::wave_speed_origin(state.materials) +
+                                 ")."));
           time_step = fixed_step;
         }
       else

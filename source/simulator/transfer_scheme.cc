@@ -5,6 +5,7 @@
 
 #include <psmpm/base/format.h>
 #include <psmpm/base/prefetch.h>
+#include <psmpm/simulator/contact_coupling.h>
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
@@ -238,6 +239,26 @@ namespace psmpm
           ParticleLoops::finish_particles_to_cells(state);
         }
       };
+
+      /// GridVelocityKernels whose particles of each body near a contact
+      /// then move with the body's own velocity (ContactCoupling::move(),
+      /// once per chunk).
+      template <int dim, ParticleLoops::VelocityUpdate velocity_update>
+      struct ContactKernels : GridVelocityKernels<dim, velocity_update>
+      {
+        static void
+        move(State<dim>       &state,
+             const std::size_t first,
+             const std::size_t last,
+             Tensor<2, dim>   *increments)
+        {
+          GridVelocityKernels<dim, velocity_update>::move(state,
+                                                          first,
+                                                          last,
+                                                          increments);
+          state.contact->move(state, first, last, increments);
+        }
+      };
     } // namespace
 
     template <int dim>
@@ -247,6 +268,12 @@ namespace psmpm
                                                   StabilityMonitor &monitor,
                                                   PhaseTimer       &timer)
     {
+      if (state.contact)
+        {
+          ContactKernels<dim, velocity_update> kernels;
+          update_in_chunks(state, monitor, timer, kernels);
+          return;
+        }
       GridVelocityKernels<dim, velocity_update> kernels;
       update_in_chunks(state, monitor, timer, kernels);
     }

@@ -15,6 +15,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <psmpm/base/checked_file.h>
+#include <psmpm/base/format.h>
 #include <psmpm/basis/powell_sabin_refinement.h>
 #include <psmpm/basis/space.h>
 #include <psmpm/mesh/triangle_geometry.h>
@@ -117,11 +118,12 @@ namespace psmpm
         Basis::PowellSabinRefinement     refinement;
       };
 
-      /// Consistent mass matrix and right-hand side (f, phi_i) by the
-      /// 7-point rule on each sub-triangle.
+      /// Consistent mass matrix and right-hand side (f / @p scale, phi_i)
+      /// by the 7-point rule on each sub-triangle.
       void
       assemble(const Discretization    &disc,
                const FunctionParser<2> &u,
+               const double             scale,
                SparseMatrix<double>    &mass,
                Vector<double>          &rhs)
       {
@@ -145,7 +147,7 @@ namespace psmpm
                     const Point<2> p  = combine(t, rule.points[q]);
                     const double   jw = area * rule.weights[q];
                     disc.space->evaluate(c, p, values.data(), nullptr);
-                    const double f = u.value(p);
+                    const double f = u.value(p) / scale;
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       {
                         cell_rhs(i) += jw * values[i] * f;
@@ -162,8 +164,9 @@ namespace psmpm
       }
 
       /// The projection's coefficients: by the lumped (row-sum) mass, or
-      /// by CG with SSOR to 1e-14 of the right-hand side.
-      void
+      /// by CG with SSOR to 1e-14 of the right-hand side. Returns why CG
+      /// failed, or "".
+      std::string
       project(const SparseMatrix<double> &mass,
               const Vector<double>       &rhs,
               const bool                  lumped,
@@ -181,21 +184,33 @@ namespace psmpm
                   row_sum += it->value();
                 solution(i) = rhs(i) / row_sum;
               }
-            return;
+            return "";
           }
         SolverControl                          control(10 * n_dofs + 100,
                               1e-14 * std::max(rhs.l2_norm(), 1e-300));
         SolverCG<Vector<double>>               cg(control);
         PreconditionSSOR<SparseMatrix<double>> ssor;
         ssor.initialize(mass, 1.2);
-        cg.solve(mass, solution, rhs, ssor);
+        try
+          {
+            cg.solve(mass, solution, rhs, ssor);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            return "l2 projection: CG with SSOR did not reach the residual " +
+                   prm_value(control.tolerance()) + " in " +
+                   std::to_string(e.last_step) + " iterations (last residual " +
+                   prm_value(e.last_residual) + ")";
+          }
+        return "";
       }
 
-      /// The squared L2 error on the sub-triangles split into four; @p h:
-      /// the largest cell diameter.
+      /// The squared L2 error of the projection of f / @p scale on the
+      /// sub-triangles split into four; @p h: the largest cell diameter.
       double
       squared_error(const Discretization    &disc,
                     const FunctionParser<2> &u,
+                    const double             scale,
                     const Vector<double>    &solution,
                     double                  &h)
       {
@@ -222,12 +237,55 @@ namespace psmpm
                       double uh = 0;
                       for (unsigned int i = 0; i < dofs_per_cell; ++i)
                         uh += solution(dofs[i]) * values[i];
-                      error2 +=
-                        area * rule.weights[q] * std::pow(uh - u.value(p), 2);
+                      error2 += area * rule.weights[q] *
+                                std::pow(uh - u.value(p) / scale, 2);
                     }
                 }
           }
         return error2;
+      }
+
+      /**
+       * The power of two by which Projection/Function's values are
+       * divided: 1 if the largest magnitude at the quadrature points of
+       * assemble() and squared_error() lies in [2^-256, 2^256] (or is
+       * zero), else the power of two at or below it. Throws ExcMessage
+       * naming the entry at the first point where @p u is not finite.
+       */
+      double
+      function_scale(const Discretization    &disc,
+                     const FunctionParser<2> &u,
+                     const std::string       &expression)
+      {
+        const Mesh::TriangleRule rule;
+        double                   largest = 0;
+        const auto               check   = [&](const Point<2> &p) {
+          const double f = u.value(p);
+          AssertThrow(std::isfinite(f),
+                      ExcMessage("Projection/Function = '" + expression +
+                                 "' is " +
+                                 (std::isnan(f) ? "nan" : prm_value(f)) +
+                                 " at (x, y) = (" + prm_value(p[0]) + ", " +
+                                 prm_value(p[1]) +
+                                 "): the projection needs finite values at "
+                                                 "its quadrature points."));
+          largest = std::max(largest, std::abs(f));
+        };
+        for (const auto &cell : disc.dof_handler.active_cell_iterators())
+          for (unsigned int s = 0; s < 6; ++s)
+            {
+              const auto t =
+                disc.refinement.cell(cell->active_cell_index()).sub_triangle(s);
+              for (unsigned int q = 0; q < 7; ++q)
+                check(combine(t, rule.points[q]));
+              for (const auto &quarter : subdivide(t, 2))
+                for (unsigned int q = 0; q < 7; ++q)
+                  check(combine(quarter, rule.points[q]));
+            }
+        const double low = std::ldexp(1., -256), high = std::ldexp(1., 256);
+        if (largest == 0 || (largest >= low && largest <= high))
+          return 1;
+        return std::ldexp(1., std::ilogb(largest));
       }
 
       /// projection.vtu (projection, exact function, error and, unless
@@ -297,6 +355,22 @@ namespace psmpm
                       {"sub_triangle"});
       }
     } // namespace
+
+    /// The discretization, the projection's coefficients and its error.
+    struct L2Projection::Projected
+    {
+      Projected(const Mesh::MeshGenerator<2> &mesh,
+                const std::string            &basis_name)
+        : disc(mesh, basis_name)
+      {
+      }
+
+      const Discretization disc;
+      Vector<double>       solution;
+      double               error = 0, h = 0;
+      /// Why CG failed, or "".
+      std::string failure;
+    };
 
     void
     L2Projection::declare_parameters(ParameterHandler &prm)
@@ -390,16 +464,50 @@ namespace psmpm
     }
 
     void
-    L2Projection::check_scene(const Mesh::MeshGenerator<2> &mesh,
-                              const std::string            &basis_name) const
+    L2Projection::prepare(const Mesh::MeshGenerator<2> &mesh,
+                          const std::string            &basis_name)
     {
-      if (output_basis_vertex == numbers::invalid_unsigned_int)
-        return;
-      Triangulation<2> tria;
-      mesh.create(tria);
-      check_basis_function(tria,
-                           *Basis::create_space<2>(basis_name),
-                           basis_name);
+      auto        result = std::make_shared<Projected>(mesh, basis_name);
+      const auto &disc   = result->disc;
+      check_basis_function(disc.tria, *disc.space, basis_name);
+      FunctionParser<2> u(1);
+      u.initialize("x,y", function_expression, {{"pi", numbers::PI}});
+      const double scale = function_scale(disc, u, function_expression);
+
+      const unsigned int     n_dofs = disc.dof_handler.n_dofs();
+      DynamicSparsityPattern dsp(n_dofs);
+      DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
+      SparsityPattern sparsity;
+      sparsity.copy_from(dsp);
+      SparseMatrix<double> mass(sparsity);
+      Vector<double>       rhs(n_dofs);
+      result->solution.reinit(n_dofs);
+      assemble(disc, u, scale, mass, rhs);
+      result->failure = project(mass, rhs, lumped, result->solution);
+      if (result->failure.empty())
+        {
+          result->error =
+            scale *
+            std::sqrt(
+              squared_error(disc, u, scale, result->solution, result->h));
+          result->solution *= scale;
+          AssertThrow(std::isfinite(result->error) &&
+                        std::isfinite(result->solution.linfty_norm()),
+                      ExcMessage("Projection/Function = '" +
+                                 function_expression +
+                                 "': its projection or the L2 error exceeds "
+                                 "the range of double numbers (largest "
+                                 "value scaled to " +
+                                 prm_value(scale) + ")."));
+        }
+      failure_reason = result->failure;
+      projected      = result;
+    }
+
+    std::string
+    L2Projection::failure() const
+    {
+      return failure_reason;
     }
 
     void
@@ -409,44 +517,36 @@ namespace psmpm
                       Summary                      &summary,
                       MPI_Comm                      comm)
     {
-      const Discretization disc(mesh, basis_name);
-      FunctionParser<2>    u(1);
-      u.initialize("x,y", function_expression, {{"pi", numbers::PI}});
-
-      const unsigned int     n_dofs = disc.dof_handler.n_dofs();
-      DynamicSparsityPattern dsp(n_dofs);
-      DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
-      SparsityPattern sparsity;
-      sparsity.copy_from(dsp);
-      SparseMatrix<double> mass(sparsity);
-      Vector<double>       rhs(n_dofs), solution(n_dofs);
-      assemble(disc, u, mass, rhs);
-      project(mass, rhs, lumped, solution);
-
-      double       h      = 0;
-      const double error2 = squared_error(disc, u, solution, h);
-      summary.set("errors.L2", std::sqrt(error2));
-      summary.set_integer("n_dofs", n_dofs);
-      summary.set_integer("n_cells", disc.tria.n_active_cells());
-      summary.set("h", h);
+      if (!projected)
+        prepare(mesh, basis_name);
+      // A prepared projection serves one run: the next one (of another
+      // mesh, basis or function) prepares its own.
+      const std::shared_ptr<const Projected> prepared = std::move(projected);
+      projected.reset();
+      const Projected &p = *prepared;
+      summary.set_integer("n_dofs", p.disc.dof_handler.n_dofs());
+      summary.set_integer("n_cells", p.disc.tria.n_active_cells());
+      if (!p.failure.empty())
+        return;
+      summary.set("errors.L2", p.error);
+      summary.set("h", p.h);
 
       // The requested basis function, as a global DoF index.
       types::global_dof_index basis_dof = numbers::invalid_dof_index;
       if (output_basis_vertex != numbers::invalid_unsigned_int)
-        {
-          check_basis_function(disc.tria, *disc.space, basis_name);
-          for (const auto &cell : disc.dof_handler.active_cell_iterators())
-            for (unsigned int k = 0; k < 3; ++k)
-              if (cell->vertex_index(k) == output_basis_vertex)
-                basis_dof = cell->vertex_dof_index(k, output_basis_function);
-        }
+        for (const auto &cell : p.disc.dof_handler.active_cell_iterators())
+          for (unsigned int k = 0; k < 3; ++k)
+            if (cell->vertex_index(k) == output_basis_vertex)
+              basis_dof = cell->vertex_dof_index(k, output_basis_function);
 
       if (!write_output || Utilities::MPI::this_mpi_process(comm) != 0)
         return;
+      FunctionParser<2> u(1);
+      u.initialize("x,y", function_expression, {{"pi", numbers::PI}});
       std::filesystem::create_directories(output_directory);
-      write_files(disc,
+      write_files(p.disc,
                   u,
-                  solution,
+                  p.solution,
                   basis_dof,
                   output_subdivisions,
                   output_directory);

@@ -29,6 +29,10 @@ namespace psmpm
     has(const std::string &key) const;
     double
     get_number(const std::string &key) const;
+    /// The first key (in key order) whose number is not finite (written
+    /// as null), or "".
+    std::string
+    non_finite_key() const;
 
     /// The JSON text.
     std::string

@@ -4,6 +4,7 @@
 #ifndef psmpm_mesh_gmsh_file_h
 #define psmpm_mesh_gmsh_file_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 
 #include <istream>
@@ -45,6 +46,18 @@ namespace psmpm
      */
     void
     check_msh(const std::string &file, const std::string &where);
+
+    /**
+     * check_msh() on every rank of @p comm (collective), which must agree:
+     * a file that some rank cannot read ends every rank with ExcMessage
+     * "on rank <r>: <where>: ..." (the first such rank), and so does a file
+     * whose bytes differ between ranks, instead of one rank leaving while
+     * the others wait in the next collective call. On one rank: check_msh().
+     */
+    void
+    check_msh_on_all_ranks(const std::string &file,
+                           const std::string &where,
+                           const MPI_Comm     comm);
 
     /**
      * The cells of the .msh file @p in (from its start) into @p tria with

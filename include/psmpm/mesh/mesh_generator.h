@@ -53,9 +53,11 @@ namespace psmpm
       static void
       declare_parameters(ParameterHandler &prm);
 
-      /// Throws ExcMessage naming the entry for invalid values.
+      /// Throws ExcMessage naming the entry for invalid values. Collective
+      /// over @p comm, whose ranks must all be able to read a Gmsh
+      /// Mesh/File (check_msh_on_all_ranks()).
       void
-      parse_parameters(ParameterHandler &prm);
+      parse_parameters(ParameterHandler &prm, MPI_Comm comm = MPI_COMM_SELF);
 
       /// Fill the (empty) triangulation @p tria.
       void

@@ -46,6 +46,12 @@ namespace psmpm
       void
       add_value(const std::string &key, const std::string &text);
 
+      /// "name = value" of the first column whose newest entry is a
+      /// number that is not finite (inf or nan), or "": such a row is no
+      /// result (the simulator stops the run on it).
+      std::string
+      non_finite_in_last_entries() const;
+
       /// Format of column @p key (which must exist): scientific or fixed.
       void
       set_scientific(const std::string &key, const bool scientific);

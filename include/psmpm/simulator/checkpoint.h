@@ -73,14 +73,47 @@ namespace psmpm
 
       /**
        * Write @p archive of rank 0 as checkpoint-<step>.h5 in @p directory
-       * (collective). Throws ExcWriteFailed naming the file on every rank
-       * if it could not be written; the previous checkpoint is then kept.
+       * (collective). If @p step is the one after the state kept by
+       * keep_state_before_last_step(), that state is added to @p archive
+       * first, under before_last_step_prefix. Throws ExcWriteFailed naming
+       * the file on every rank if it could not be written; the previous
+       * checkpoint is then kept.
        */
       void
       write(const std::string &directory,
             const unsigned int step,
-            const Archive     &archive,
+            Archive           &archive,
             MPI_Comm           comm);
+
+      /// Where a checkpoint at the end of a run holds the state before the
+      /// run's last step.
+      static constexpr const char *before_last_step_prefix =
+        "before_last_step/";
+
+      /**
+       * Keep @p archive, the checkpoint of the state after @p step, taken
+       * just before the step that ends the run, until the checkpoint of the
+       * next step (the run's last) is written, which then carries it too.
+       *
+       * The last step is cut to land on Time/End time (or the time is
+       * snapped to it), so it is not the step a run with a later End time
+       * takes. A resume with a later End time therefore restarts from the
+       * state before it (restart_before_last_step()) and takes the full
+       * step, bit-identical to a run that had the later End time from the
+       * start; its files of the cut step (statistics row, outputs) are
+       * replaced as after any resume.
+       */
+      void
+      keep_state_before_last_step(Archive &&archive, const unsigned int step);
+
+      /**
+       * If @p archive (a checkpoint at the end of its run) holds the state
+       * before the run's last step, replace @p archive by that checkpoint
+       * and return true; otherwise leave it and return false (a checkpoint
+       * of an older psmpm, or of a run that took no step).
+       */
+      static bool
+      restart_before_last_step(Archive &archive);
 
       /// "checkpoint-<step>.h5" (at least 8 digits).
       static std::string
@@ -173,6 +206,9 @@ namespace psmpm
       double                                wall_interval = 0; ///< seconds
       unsigned int                          last          = 0;
       std::chrono::steady_clock::time_point last_wall;
+      /// keep_state_before_last_step(): the state and its step.
+      Archive      before_last_step;
+      unsigned int before_last_step_number = 0;
     };
   } // namespace Simulator
 } // namespace psmpm

@@ -111,9 +111,9 @@ namespace psmpm
      * criterion is corrected by correct_pair() with the normal from the
      * two bodies' mass gradients and the pair's friction coefficient.
      *
-     * Not wired into the transfers yet: the class holds the parameters
-     * and the nodal algorithm over arrays (apply()), which the tests call
-     * directly.
+     * The class holds the parameters and the nodal algorithm over arrays
+     * (apply()); ContactCoupling builds the arrays in a run's step, and
+     * the tests call it directly.
      */
     template <int dim>
     class Contact
@@ -194,6 +194,16 @@ namespace psmpm
       apply(ContactFields<dim>                      &fields,
             std::vector<ContactPairStatistics<dim>> &statistics) const;
 
+      /// The same, with only the nodes i where @p counted[i] != 0 in the
+      /// statistics (nullptr: all; the DoFs a rank owns, every rank
+      /// corrects its ghosts alike), and, unless @p with_friction, the
+      /// normal correction alone (every pair frictionless).
+      void
+      apply(ContactFields<dim>                      &fields,
+            std::vector<ContactPairStatistics<dim>> &statistics,
+            const std::vector<char>                 *counted,
+            const bool with_friction = true) const;
+
       NormalType          normal_type = NormalType::average;
       SeparationCriterion criterion   = SeparationCriterion::volume_fraction;
       double              critical_volume_fraction = 0.8;
@@ -220,7 +230,8 @@ namespace psmpm
       void
       correct_node(ContactFields<dim>                      &fields,
                    const unsigned int                       i,
-                   std::vector<ContactPairStatistics<dim>> &statistics) const;
+                   std::vector<ContactPairStatistics<dim>> &statistics,
+                   const bool with_friction) const;
 
       bool   type_multi_velocity = false;
       double default_friction    = 0;

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/timer.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,10 @@ namespace psmpm
       unsigned int resumed_step = 0;
       /// Wall time of the run before the checkpoint it resumed from.
       double wall_offset = 0;
+      /// Particles' cell changes (all ranks) before the checkpoint it
+      /// resumed from ("simulator/cell_crossings", absent in checkpoints
+      /// of older versions: 0).
+      std::uint64_t cell_crossings_offset = 0;
       /// Wall time of this process's part of the run.
       Timer wall;
       /// CPU seconds (user + sys, this rank) of the time loop of run().

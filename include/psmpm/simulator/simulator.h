@@ -20,6 +20,7 @@
 #include <psmpm/postprocess/statistics_table.h>
 #include <psmpm/simulator/boundary_conditions.h>
 #include <psmpm/simulator/checkpoint.h>
+#include <psmpm/simulator/contact_coupling.h>
 #include <psmpm/simulator/discretisation.h>
 #include <psmpm/simulator/initial_conditions.h>
 #include <psmpm/simulator/output_files.h>
@@ -55,6 +56,10 @@ namespace psmpm
       double n_particles  = 0; ///< over all ranks
       double n_outputs    = 0; ///< VTU outputs written
       double output_bytes = 0; ///< all VTU outputs and statistics
+      double end_time     = 0;
+      /// Where the time step comes from, for messages: "Time/Time step =
+      /// ..." or the automatic step and the material that sets it.
+      std::string time_step;
     };
 
     /// What the application needs of a run, whatever its dimension.
@@ -151,6 +156,10 @@ namespace psmpm
       /// must have started or resume() been called).
       void
       write_checkpoint();
+      /// The checkpoint of the current state (collective; the particles
+      /// on rank 0 only).
+      Archive
+      checkpoint_archive();
 
       /// One time step (public for tests): transfer, locate, advance time.
       void
@@ -228,6 +237,10 @@ namespace psmpm
       }
 
     private:
+      /// RunSize::time_step: the fixed step's entry, or the automatic
+      /// step with the material whose wave speed sets it.
+      std::string
+      describe_time_step() const;
       /// Mesh/Distribution = distributed: refuse what is not verified on
       /// a mesh that each rank holds only in part.
       void
@@ -328,6 +341,8 @@ namespace psmpm
       std::array<std::vector<std::string>, dim> fixed_names;
       /// Reactions, friction, prescribed velocities, boundary parts.
       BoundaryConditions<dim> boundary_conditions;
+      /// Multi-velocity contact between the bodies (subsection Contact).
+      ContactCoupling<dim> contact;
       /// What checkpoints of this run are compared with.
       SceneText scene_text;
 

@@ -27,6 +27,8 @@ namespace psmpm
     class Reconstruction;
     template <int dim>
     class BoundaryConditions;
+    template <int dim>
+    class ContactCoupling;
 
     /**
      * The discrete state of an MPM run that the components (transfer
@@ -116,6 +118,10 @@ namespace psmpm
       /// applied by the transfer schemes; nullptr when the scene uses
       /// none of them (the simulator owns the object).
       BoundaryConditions<dim> *boundary_conditions = nullptr;
+      /// Multi-velocity contact between bodies, applied by the transfer
+      /// schemes; nullptr with Contact/Type = none (the simulator owns the
+      /// object).
+      ContactCoupling<dim> *contact = nullptr;
       Material::MaterialSet<dim>           materials;
       Particles::ParticleSet<dim>          particles;
       Tensor<1, dim>                       gravity;

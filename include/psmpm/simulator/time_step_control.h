@@ -68,6 +68,15 @@ namespace psmpm
         return !(time < end_time * (1 - 1e-12));
       }
 
+      /// Whether the step @p dt from @p time ends the run: the step after
+      /// which finished() holds (cut to land on the end time, or snapped
+      /// to it).
+      bool
+      ends_run(const double time, const double dt) const
+      {
+        return finished(snap(time + dt));
+      }
+
       /// @p time snapped to the end time if round-off in the sum of steps
       /// left a sliver of a last step.
       double

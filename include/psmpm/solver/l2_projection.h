@@ -11,6 +11,7 @@
 #include <psmpm/mesh/mesh_generator.h>
 #include <psmpm/base/summary.h>
 
+#include <memory>
 #include <string>
 
 namespace psmpm
@@ -46,28 +47,44 @@ namespace psmpm
       void
       parse_parameters(ParameterHandler &prm);
 
-      /// The checks of the scene that need its mesh (Output/Basis
-      /// function within the mesh's vertices and the basis' functions per
-      /// vertex), before any output is written: bad input is reported as
-      /// such (exit 2), not as an internal error after the output
-      /// directory was set up.
+      /**
+       * Create the mesh and the space, check Output/Basis function against
+       * them and Projection/Function at every quadrature point, project
+       * and integrate the error: everything the input can make fail, so
+       * that bad input is reported as such (exit 2) before the output
+       * directory is touched. Throws ExcMessage naming the entry if the
+       * function is not finite at a quadrature point or its projection
+       * exceeds the range of double numbers; a CG solve that does not
+       * converge is no error here but failure() of the run.
+       *
+       * Values beyond 2^-256 .. 2^256 in magnitude are projected divided
+       * by a power of two near their largest magnitude (exact in binary
+       * arithmetic), so that the squares in CG's norms neither overflow
+       * nor vanish; the coefficients and the error are scaled back.
+       */
       void
-      check_scene(const Mesh::MeshGenerator<2> &mesh,
-                  const std::string            &basis_name) const;
+      prepare(const Mesh::MeshGenerator<2> &mesh,
+              const std::string            &basis_name);
 
       /**
-       * Create the mesh, project, fill @p summary (errors.L2, n_dofs,
-       * n_cells, h = the largest cell diameter) and write projection.vtu
-       * (projection, exact function, error and, if requested, one basis
-       * function on a refined patch mesh), mesh.vtu and ps_refinement.vtu into
-       * @p output_directory.
+       * Fill @p summary (errors.L2, n_dofs, n_cells, h = the largest cell
+       * diameter) and write projection.vtu (projection, exact function,
+       * error and, if requested, one basis function on a refined patch
+       * mesh), mesh.vtu and ps_refinement.vtu into @p output_directory;
+       * prepare() first unless it was called since the last run(), whose
+       * @p mesh and @p basis_name it then uses. If failure() is not
+       * empty, only n_dofs and n_cells are filled and nothing is written.
        */
       void
       run(const Mesh::MeshGenerator<2> &mesh,
           const std::string            &basis_name,
           const std::string            &output_directory,
-          Summary         &summary,
+          Summary                      &summary,
           MPI_Comm                      comm);
+
+      /// Why the last projection failed (CG did not converge), or "".
+      std::string
+      failure() const;
 
       /// Throws ExcMessage naming Output/Basis function if it is not a
       /// function of @p space on @p tria.
@@ -89,6 +106,14 @@ namespace psmpm
       unsigned int output_subdivisions = 4;
       /// Write the VTU files (off for timing runs).
       bool write_output = true;
+
+    private:
+      struct Projected;
+      /// What prepare() computed for the next run(); null before prepare()
+      /// and after run().
+      std::shared_ptr<const Projected> projected;
+      /// Projected::failure of the last prepare().
+      std::string failure_reason;
     };
   } // namespace Solver
 } // namespace psmpm

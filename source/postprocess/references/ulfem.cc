@@ -4,6 +4,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/references/bar_amplitude.h>
 #include <psmpm/postprocess/updated_lagrangian_1d.h>
 
 #include <cmath>
@@ -35,9 +36,12 @@ namespace psmpm
           p.n_elements     = c.ulfem_elements;
           const double v0 = c.amplitude, L = c.length;
           if (bar)
-            p.initial_velocity = [v0, L](const double X) {
-              return v0 * std::sin(numbers::PI * X / L);
-            };
+            {
+              check_bar_amplitude(c);
+              p.initial_velocity = [v0, L](const double X) {
+                return v0 * std::sin(numbers::PI * X / L);
+              };
+            }
           ulfem = std::make_unique<UpdatedLagrangian1D>(p);
         }
 

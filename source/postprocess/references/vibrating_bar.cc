@@ -4,6 +4,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <psmpm/postprocess/reference.h>
+#include <psmpm/postprocess/references/bar_amplitude.h>
 
 #include <cmath>
 
@@ -25,6 +26,7 @@ namespace psmpm
           , youngs_modulus(c.material.youngs_modulus)
           , density(c.material.density)
         {
+          check_bar_amplitude(c);
         }
 
         typename Reference<dim>::State

@@ -5,6 +5,7 @@
 
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/boundary_conditions.h>
+#include <psmpm/simulator/contact_coupling.h>
 #include <psmpm/simulator/particle_loops.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/transfer_scheme.h>
@@ -37,11 +38,17 @@ namespace psmpm
             return false;
           if (state.boundary_conditions)
             state.boundary_conditions->after_acceleration(state);
+          if (state.contact)
+            state.contact->correct_momentum(state);
           update_particle_velocities(state, timer);
+          if (state.contact)
+            state.contact->add_velocity_increments(state, true);
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           if (state.boundary_conditions)
             state.boundary_conditions->impose_velocity(state);
+          if (state.contact)
+            state.contact->correct_moving_velocity(state);
           update_particle_state(state, monitor, timer);
           return true;
         }

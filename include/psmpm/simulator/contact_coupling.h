@@ -1,0 +1,208 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_simulator_contact_coupling_h
+#define psmpm_simulator_contact_coupling_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <psmpm/base/archive.h>
+#include <psmpm/postprocess/statistics_table.h>
+#include <psmpm/simulator/contact.h>
+#include <psmpm/simulator/state.h>
+
+#include <string>
+#include <vector>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    /**
+     * Multi-velocity contact in the time step (subsection "Contact",
+     * doc/contact.md): the nodal algorithm of Contact applied to per-body
+     * grid fields at the contact DoFs, the DoFs whose support holds
+     * particles of two bodies or more, and its result handed to the
+     * particles of each body as velocity increments on top of the shared
+     * grid solution, whatever mass strategy solved it.
+     *
+     * Per step (MUSL): correct_momentum() after the shared grid
+     * acceleration (per-body mass, momentum, force, mass gradient and
+     * volume at the contact DoFs, the per-body lumped update, the
+     * correction); add_velocity_increments() after the particle velocity
+     * update; correct_moving_velocity() after the shared grid velocity
+     * the particles move with, and move() per chunk of moved particles
+     * (positions and strain increments of each body with its own
+     * velocity). With MPI the per-body sums of DoFs on rank boundaries are
+     * added up over the ranks.
+     *
+     * Per node and body the increments keep what the shared solution
+     * gives the node's centre of mass: body b's field is the shared one
+     * plus its deviation from the lumped mass average,
+     * a_bi = a_i + f_bi / m_bi - F_i / M_i (F_i, M_i the sums over the
+     * bodies), so that sum_b m_bi (a_bi - a_i) = 0; one body at a node
+     * gets exactly the shared field.
+     */
+    template <int dim>
+    class ContactCoupling
+    {
+    public:
+      /// Subsection "Contact" (entered here).
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /// Subsection "Contact", checked against the scene's number of
+      /// bodies (Bodies/Number of bodies).
+      void
+      parse_parameters(ParameterHandler &prm, const unsigned int n_bodies);
+
+      bool
+      enabled() const
+      {
+        return contact.enabled();
+      }
+
+      /// With contact: Mass matrix/Type = automatic becomes lumped and
+      /// Transfer/Scheme = automatic musl (set in @p prm), the
+      /// combination contact is verified with, for every basis.
+      void
+      choose_automatic(ParameterHandler &prm, std::string &mass_type) const;
+
+      /// Throws ExcMessage naming Contact/Type unless the transfer
+      /// @p scheme (Transfer/Scheme), @p reconstruction and @p mass_type
+      /// (Mass matrix/Type) are supported.
+      void
+      check_transfer(const std::string &scheme,
+                     const std::string &reconstruction,
+                     const std::string &mass_type) const;
+
+      /// Once the grid exists: the node volumes, vertex groups and table
+      /// sizes.
+      void
+      initialize(const State<dim> &state);
+
+      /**
+       * After the shared grid acceleration state.grid_acceleration (its
+       * boundary conditions applied), before the particles' velocities
+       * change: the contact DoFs of this step, the per-body fields there,
+       * the per-body velocities v_bi* = v_bi + dt a_bi, the correction and
+       * the increments v_bi' - v_bi - dt a_i each particle of body b gets
+       * on top of the shared update (add_velocity_increments()).
+       */
+      void
+      correct_momentum(State<dim> &state);
+
+      /// v_p += sum_i dv_bi N_i(x_p) for the particles near contact DoFs;
+      /// with @p momentum_to_grid their momentum change goes into the
+      /// cell right-hand sides too (MUSL's second projection).
+      void
+      add_velocity_increments(State<dim> &state, const bool momentum_to_grid);
+
+      /// After the shared grid velocity state.grid_velocity the particles
+      /// move with: the per-body velocities from the particles' momenta,
+      /// corrected again, and their deviation from the shared one, which
+      /// move() adds.
+      void
+      correct_moving_velocity(const State<dim> &state);
+
+      /// For the moved particles [@p first, @p last) of a chunk (after
+      /// ParticleLoops::move_particles): positions, displacements and
+      /// strain increments (increments[p - first]) of each body's
+      /// particles with the body's own moving velocity.
+      void
+      move(State<dim>       &state,
+           const std::size_t first,
+           const std::size_t last,
+           Tensor<2, dim>   *increments) const;
+
+      /// Per pair a-b: contact_force_a_b_x (, _y), the force on body a
+      /// over the last step, and friction_work_a_b, normal_work_a_b, the
+      /// kinetic energy removed since the start (<= 0).
+      std::vector<std::string>
+      statistics_columns() const;
+
+      /// The columns above, summed over the ranks (collective).
+      void
+      add_columns(Postprocess::StatisticsTable &table) const;
+
+      /// The accumulated works (contact/ in a checkpoint).
+      void
+      save(Archive &archive) const;
+      void
+      load(const Archive &archive);
+
+      /// The parameters and the nodal algorithm.
+      Contact<dim> contact;
+
+    private:
+      /// Per step: the contact DoFs (contact_dofs, dof_index), the cells
+      /// touching them and the particles in those cells. Returns the
+      /// number of contact DoFs over all ranks.
+      unsigned int
+      find_contact_dofs(const State<dim> &state);
+
+      /// Per-body sums at the contact DoFs, width values per (DoF, body),
+      /// added up over the ranks (collective; nothing on one rank).
+      void
+      sum_over_ranks(const State<dim>    &state,
+                     std::vector<double> &values,
+                     const unsigned int   width) const;
+
+      /// Per-body mass, volume, momentum, force and mass gradient of the
+      /// listed particles at the contact DoFs into sums.
+      void
+      particles_to_contact_dofs(const State<dim> &state);
+
+      /// Contact::apply on fields; the statistics of the DoFs each rank
+      /// owns, summed over the ranks, into step_statistics.
+      void
+      apply_correction();
+
+      /// The mass gradients of the DoFs of one vertex summed, for each of
+      /// them (Powell-Sabin; nothing changes for P1).
+      void
+      vertex_gradients();
+
+      /// Zero the increments of components fixed at a wall.
+      void
+      clear_fixed(const State<dim>            &state,
+                  std::vector<Tensor<1, dim>> &dv) const;
+
+      unsigned int n_bodies = 0;
+      /// Per local relevant DoF: its contact index or invalid; whether
+      /// this rank owns it; its volume (the integral of N_i).
+      std::vector<unsigned int> dof_index;
+      std::vector<char>         owned;
+      std::vector<double>       dof_volume;
+      /// Per local relevant DoF: the first DoF of its vertex.
+      std::vector<unsigned int> vertex_dof;
+      /// Scratch of vertex_gradients().
+      std::vector<unsigned int>   vertex_slot;
+      std::vector<Tensor<1, dim>> grouped;
+      /// Scratch of find_contact_dofs(): body bit masks per cell and DoF.
+      std::vector<unsigned int> cell_mask, dof_mask;
+      /// The contact DoFs (local relevant indices), the cells touching
+      /// them (1) and the particles in those cells.
+      std::vector<unsigned int> contact_dofs;
+      std::vector<char>         node_owned, contact_cell;
+      std::vector<std::size_t>  near_particles;
+      /// [(i * n_bodies + b) * width + j]: the per-body sums.
+      std::vector<double> sums;
+      ContactFields<dim>  fields;
+      /// dv_bi of correct_momentum(), then the moving velocity's.
+      std::vector<Tensor<1, dim>> velocity_increment, moving_increment;
+      std::vector<ContactPairStatistics<dim>> step_statistics, scratch;
+      /// Per pair (all ranks): force of the last step and the works
+      /// accumulated since the start.
+      std::vector<Tensor<1, dim>> pair_force;
+      std::vector<double>         friction_work, normal_work;
+      /// Whether any rank has contact DoFs in this step.
+      bool         any_contact = false;
+      MPI_Comm     comm        = MPI_COMM_SELF;
+      unsigned int n_ranks     = 1;
+    };
+  } // namespace Simulator
+} // namespace psmpm
+
+#endif
