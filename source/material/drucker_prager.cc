@@ -81,6 +81,10 @@ namespace psmpm
       {
         const DruckerPrager<dim> &model;
 
+        /// The return scales the deviator: in_plane() maps a plane-strain
+        /// stress in its own frame.
+        static constexpr bool returns_in_plane = true;
+
         void
         prepare(typename PlasticHypoelastic<dim>::Strength &s) const
         {
@@ -120,6 +124,63 @@ namespace psmpm
                    std::array<double, 3> &sigma) const
         {
           return return_to_cone(s, sigma);
+        }
+
+        /// return_to_cone() of the plane-strain stress t = (xx, yy, xy,
+        /// zz) in its own frame: false if it is inside the cone (t
+        /// unchanged); otherwise t returned, the plastic strain @p ep =
+        /// C^-1 (trial - t) (tensor shear) in closed form, dev(ep) =
+        /// gamma dev(t) / (2 q) and tr(ep) = eta_bar gamma on the cone
+        /// (dev(t) / (2 G) and (p - apex) / K at the apex), and its
+        /// equivalent d_kappa = sqrt(2/3 |dev(ep)|^2) = gamma / sqrt(3)
+        /// (q / (sqrt(3) G) at the apex). One square root and one
+        /// division.
+        bool
+        in_plane(const typename PlasticHypoelastic<dim>::Strength &s,
+                 std::array<double, 4>                            &t,
+                 std::array<double, 4>                            &ep,
+                 double &d_kappa) const
+        {
+          const double eta = s.derived[0], xi_c = s.derived[1],
+                       eta_bar = s.derived[2];
+          const double p       = (t[0] + t[1] + t[3]) * (1. / 3);
+          const double dxx = t[0] - p, dyy = t[1] - p, dzz = t[3] - p,
+                       dxy = t[2];
+          const double q =
+            std::sqrt(0.5 * (dxx * dxx + dyy * dyy + dzz * dzz) + dxy * dxy);
+          const double f = q + eta * p - xi_c;
+          if (f <= 0)
+            return false;
+          constexpr double inv_sqrt3 = 0.57735026918962576451;
+          const double     G = s.derived[3], gamma = f * s.derived[5];
+          double           h, volumetric, factor, p_new;
+          if (q - G * gamma >= 0 && q > 0)
+            {
+              const double r = gamma / q;
+              h              = 0.5 * r;
+              volumetric     = eta_bar * gamma * (1. / 3);
+              factor         = 1 - G * r;
+              p_new          = p - s.derived[4] * eta_bar * gamma;
+              d_kappa        = gamma * inv_sqrt3;
+            }
+          else
+            {
+              // Past the apex (eta > 0, see return_to_cone()).
+              p_new      = xi_c / eta;
+              h          = s.derived[6];
+              volumetric = (p - p_new) * s.derived[7];
+              factor     = 0;
+              d_kappa    = 2 * q * h * inv_sqrt3;
+            }
+          ep = {{h * dxx + volumetric,
+                 h * dyy + volumetric,
+                 h * dxy,
+                 h * dzz + volumetric}};
+          t  = {{factor * dxx + p_new,
+                 factor * dyy + p_new,
+                 factor * dxy,
+                 factor * dzz + p_new}};
+          return true;
         }
       };
 
@@ -191,6 +252,8 @@ namespace psmpm
       s.derived[3]         = this->shear_modulus();
       s.derived[4]         = this->bulk_modulus();
       s.derived[5] = 1 / (s.derived[3] + s.derived[4] * eta * s.derived[2]);
+      s.derived[6] = 1 / (2 * s.derived[3]);
+      s.derived[7] = 1 / (3 * s.derived[4]);
     }
 
 

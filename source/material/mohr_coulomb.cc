@@ -136,6 +136,12 @@ namespace psmpm
         main_inverse = 6,
         edge_block   = 7,
         edge_size    = 8,
+        /// After the edges: sqrt(2/3) |dev b| of the main plane's flow
+        /// direction b (the equivalent plastic strain per unit
+        /// multiplier), 1 / E and nu (the compliance).
+        main_equivalent = 23,
+        inv_e_index     = 24,
+        nu_index        = 25,
       };
 
       /// The constants of one return: sin phi, sin psi, k = 2 c cos phi,
@@ -189,21 +195,30 @@ namespace psmpm
       DEAL_II_ALWAYS_INLINE inline bool
       return_to_main_plane(const std::array<double, 3> &x,
                            const Strength              &s,
-                           std::array<double, 3>       &y)
+                           std::array<double, 3>       &y,
+                           double                      &multiplier)
       {
         const double *const Db = &s.derived[main_db];
         const double        a0 = 1 + s.sin_phi, a2 = -(1 - s.sin_phi);
         const double        k               = s.derived[k_index];
         const double        inv_denominator = s.derived[main_inverse];
         const double        dl = (a0 * x[0] + a2 * x[2] - k) * inv_denominator;
-        y                      = x;
         if (!(dl > 0))
-          return false;
+          {
+            // Element by element: a copy of the whole array is a 16-byte
+            // load of values just stored as 8-byte ones, which the
+            // processor cannot forward (a stall on every particle).
+            y[0] = x[0];
+            y[1] = x[1];
+            y[2] = x[2];
+            return false;
+          }
         y = {{x[0] - dl * Db[0], x[1] - dl * Db[1], x[2] - dl * Db[2]}};
         // Refined once (see return_to_active_set()).
         const double d2 = (a0 * y[0] + a2 * y[2] - k) * inv_denominator;
         for (unsigned int d = 0; d < 3; ++d)
           y[d] -= d2 * Db[d];
+        multiplier = dl + d2;
         return acceptable(y, s.sin_phi, k, s.tension_cutoff, s.cohesion);
       }
 
@@ -231,15 +246,18 @@ namespace psmpm
         const double                k  = s.derived[k_index];
         const double *const         Dm = &s.derived[main_db];
         const std::array<double, 3> am = {{a0, 0, a2}};
-        const std::array<double, 3> ae = e == 1 ?
-                                           std::array<double, 3>{{0, a0, a2}} :
-                                           std::array<double, 3>{{a0, a2, 0}};
+        // The second plane's normal (0, a0, a2) or (a0, a2, 0) as three
+        // selected values: an array chosen between two would be stored
+        // and loaded back whole, a stall on every edge return.
+        const double ae0 = e == 1 ? 0 : a0, ae1 = e == 1 ? a0 : a2,
+                     ae2 = e == 1 ? a2 : 0;
         const double A00 = E[3], A01 = E[4], A10 = E[5], A11 = E[6];
         const auto   solve =
           [&](const std::array<double, 3> &z, double &d0, double &d1) {
-            const double r0 = dot(am, z) - k, r1 = dot(ae, z) - k;
-            d0 = (r0 * A11 - A01 * r1) * inv;
-            d1 = (A00 * r1 - A10 * r0) * inv;
+            const double r0 = dot(am, z) - k,
+                         r1 = ae0 * z[0] + ae1 * z[1] + ae2 * z[2] - k;
+            d0              = (r0 * A11 - A01 * r1) * inv;
+            d1              = (A00 * r1 - A10 * r0) * inv;
           };
         double d0, d1;
         solve(x, d0, d1);
@@ -390,13 +408,43 @@ namespace psmpm
         return true;
       }
 
-      /// The return of the principal stresses @p sigma (any order) for the
-      /// prepared @p strength: false if they are inside the surface
-      /// (unchanged). The main plane, then the edge its result points to
-      /// (y_2 < y_3: sigma_2 = sigma_3; else sigma_1 = sigma_2), then the
-      /// other edge, all in closed form (what most yielding particles
-      /// need: the main plane, or an edge in uniaxial and triaxial
-      /// states), then every active set.
+      /// The return of the sorted principal stresses @p x (x_1 >= x_2 >=
+      /// x_3) for the prepared @p strength: false if they are inside the
+      /// surface; otherwise true and the returned ones in @p y, with
+      /// @p main_multiplier the plastic multiplier if the main plane is
+      /// the answer (-1 otherwise). The main
+      /// plane, then the edge its result points to (y_2 < y_3: sigma_2 =
+      /// sigma_3; else sigma_1 = sigma_2), then the other edge, all in
+      /// closed form (what most yielding particles need: the main plane,
+      /// or an edge in uniaxial and triaxial states), then every active
+      /// set.
+      template <typename Strength>
+      DEAL_II_ALWAYS_INLINE inline bool
+      return_sorted(const Strength              &strength,
+                    const std::array<double, 3> &x,
+                    std::array<double, 3>       &y,
+                    double                      &main_multiplier)
+      {
+        const double sp = strength.sin_phi;
+        main_multiplier = -1;
+        if ((1 + sp) * x[0] - (1 - sp) * x[2] - strength.derived[k_index] <=
+              0 &&
+            x[0] <= strength.tension_cutoff)
+          return false;
+        if (!return_to_main_plane(x, strength, y, main_multiplier))
+          {
+            main_multiplier = -1;
+            const unsigned int first =
+              1 + static_cast<unsigned int>(y[1] < y[2]);
+            if (!return_to_edge(x, strength, first, y) &&
+                !return_to_edge(x, strength, 3 - first, y))
+              return_by_active_sets_or_apex(x, strength, y);
+          }
+        return true;
+      }
+
+      /// return_sorted() of the principal stresses @p sigma (any order):
+      /// false if they are inside the surface (unchanged).
       template <typename Strength>
       DEAL_II_ALWAYS_INLINE inline bool
       return_principal(const Strength &strength, std::array<double, 3> &sigma)
@@ -411,21 +459,78 @@ namespace psmpm
           std::swap(o[0], o[1]);
         const std::array<double, 3> x = {
           {sigma[o[0]], sigma[o[1]], sigma[o[2]]}};
-        const double sp = strength.sin_phi;
-        if ((1 + sp) * x[0] - (1 - sp) * x[2] - strength.derived[k_index] <=
-              0 &&
-            x[0] <= strength.tension_cutoff)
-          return false;
         std::array<double, 3> y;
-        if (!return_to_main_plane(x, strength, y))
-          {
-            const unsigned int first = y[1] < y[2] ? 2 : 1;
-            if (!return_to_edge(x, strength, first, y) &&
-                !return_to_edge(x, strength, 3 - first, y))
-              return_by_active_sets_or_apex(x, strength, y);
-          }
+        double                main_multiplier;
+        if (!return_sorted(strength, x, y, main_multiplier))
+          return false;
         for (unsigned int d = 0; d < 3; ++d)
           sigma[o[d]] = y[d];
+        return true;
+      }
+
+      /// The return of the plane-strain stress t = (xx, yy, xy, zz) in
+      /// its own frame: false if it is inside the surface (t unchanged);
+      /// otherwise t returned and the plastic strain @p ep = C^-1 (trial
+      /// - t) (tensor shear) and its equivalent @p d_kappa. The sorted
+      /// principal frame by min and max, the place of sigma_zz in it by
+      /// two comparisons (the frame of return_principal()'s sort, ties
+      /// included); the rotation back with the in-plane eigenvector's
+      /// cos and sin of 2 theta from t. On the main plane (most yielding
+      /// particles) the plastic strain is the multiplier times the flow
+      /// direction and its equivalent the multiplier times a constant:
+      /// no second square root.
+      template <typename Strength>
+      DEAL_II_ALWAYS_INLINE inline bool
+      return_plane_strain(const Strength        &strength,
+                          std::array<double, 4> &t,
+                          std::array<double, 4> &ep,
+                          double                &d_kappa)
+      {
+        const double centre = 0.5 * (t[0] + t[1]);
+        const double half   = 0.5 * (t[0] - t[1]);
+        const double radius = std::sqrt(half * half + t[2] * t[2]);
+        const double a = centre + radius, b = centre - radius, z = t[3];
+        const std::array<double, 3> x = {
+          {std::max(a, z), std::max(b, std::min(a, z)), std::min(b, z)}};
+        std::array<double, 3> y, e;
+        double                dl;
+        if (!return_sorted(strength, x, y, dl))
+          return false;
+        const auto &d = strength.derived;
+        if (dl >= 0)
+          {
+            const double sin_psi = strength.sin_psi;
+            e       = {{dl * (1 + sin_psi), 0, -dl * (1 - sin_psi)}};
+            d_kappa = dl * d[main_equivalent];
+          }
+        else
+          {
+            const double inv_e = d[inv_e_index], nu = d[nu_index];
+            const std::array<double, 3> c = {
+              {x[0] - y[0], x[1] - y[1], x[2] - y[2]}};
+            e              = {{(c[0] - nu * (c[1] + c[2])) * inv_e,
+                               (c[1] - nu * (c[0] + c[2])) * inv_e,
+                               (c[2] - nu * (c[0] + c[1])) * inv_e}};
+            const double m = (e[0] + e[1] + e[2]) * (1. / 3);
+            d_kappa =
+              std::sqrt(2. / 3 *
+                        ((e[0] - m) * (e[0] - m) + (e[1] - m) * (e[1] - m) +
+                         (e[2] - m) * (e[2] - m)));
+          }
+        // Back to (a, b, z): z's place in the sorted frame.
+        // By flags, not branches: where sigma_zz lies varies from particle
+        // to particle near a hydrostatic state.
+        const unsigned int z_place =
+          static_cast<unsigned int>(z <= a) + static_cast<unsigned int>(z <= b);
+        const unsigned int ia = static_cast<unsigned int>(z_place == 0),
+                           ib = 2 - static_cast<unsigned int>(z_place == 2);
+        const double inv      = radius > 0 ? 1 / radius : 0;
+        const double cos2     = radius > 0 ? half * inv : 1;
+        const double sin2     = t[2] * inv;
+        const double p = 0.5 * (y[ia] + y[ib]), q = 0.5 * (y[ia] - y[ib]);
+        t               = {{p + q * cos2, p - q * cos2, q * sin2, y[z_place]}};
+        const double ea = 0.5 * (e[ia] + e[ib]), eb = 0.5 * (e[ia] - e[ib]);
+        ep = {{ea + eb * cos2, ea - eb * cos2, eb * sin2, e[z_place]}};
         return true;
       }
 
@@ -435,6 +540,18 @@ namespace psmpm
       struct MohrCoulombReturn
       {
         const MohrCoulomb<dim> &model;
+
+        /// in_plane() maps a plane-strain stress in its own frame.
+        static constexpr bool returns_in_plane = true;
+
+        bool
+        in_plane(const typename PlasticHypoelastic<dim>::Strength &s,
+                 std::array<double, 4>                            &t,
+                 std::array<double, 4>                            &ep,
+                 double &d_kappa) const
+        {
+          return return_plane_strain(s, t, ep, d_kappa);
+        }
 
         void
         prepare(typename PlasticHypoelastic<dim>::Strength &s) const
@@ -508,7 +625,12 @@ namespace psmpm
       d[two_g_index]                 = two_g;
       for (unsigned int i = 0; i < 3; ++i)
         d[main_db + i] = Dm[i];
-      d[main_inverse] = 1 / (a0 * Dm[0] + a2 * Dm[2]);
+      d[main_inverse]    = 1 / (a0 * Dm[0] + a2 * Dm[2]);
+      const double mb    = (b0 + b2) * (1. / 3);
+      d[main_equivalent] = std::sqrt(
+        2. / 3 * ((b0 - mb) * (b0 - mb) + mb * mb + (b2 - mb) * (b2 - mb)));
+      d[inv_e_index] = 1 / this->youngs_modulus;
+      d[nu_index]    = this->poisson_ratio;
       for (const unsigned int e : {1u, 2u})
         {
           const std::array<double, 3> ae =

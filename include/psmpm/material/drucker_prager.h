@@ -52,8 +52,8 @@ namespace psmpm
              double                  *state,
              double                  *volume_ratio) const override;
 
-      /// eta, xi c, eta_bar of @p strength, G, K and 1 / (G + K eta
-      /// eta_bar) into strength.derived.
+      /// eta, xi c, eta_bar of @p strength, G, K, 1 / (G + K eta
+      /// eta_bar), 1 / (2 G) and 1 / (3 K) into strength.derived.
       void
       prepare(typename PlasticHypoelastic<dim>::Strength &strength) const;
 

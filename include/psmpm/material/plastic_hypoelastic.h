@@ -66,7 +66,7 @@ namespace psmpm
         /// Constants the return derives from the above and the elastic
         /// constants in its prepare() (once per batch, or per softened
         /// particle), so that a particle's return divides by nothing.
-        std::array<double, 24> derived = {};
+        std::array<double, 28> derived = {};
       };
 
       /// Friction angle, Dilatancy angle, Cohesion, Tension cutoff,
@@ -150,7 +150,13 @@ namespace psmpm
        * `ret(strength, sigma)` with the principal trial stresses sigma
        * (any order); it returns false for an elastic trial stress, or
        * true and sigma returned. Templated so that the return is inlined
-       * in the particle loop (no virtual call per particle).
+       * in the particle loop (no virtual call per particle). In plane
+       * strain without softening, a Return with returns_in_plane = true
+       * instead maps the trial stress t = (xx, yy, xy, zz) in its own
+       * frame, `ret.in_plane(strength, t, ep, d_kappa)`, and gives the
+       * plastic strain increment ep = C^-1 (trial - t) (tensor shear) and
+       * its equivalent d_kappa in closed form (tests/material/
+       * plastic_in_plane_01 checks both against the principal return).
        */
       template <typename Return>
       void
@@ -162,8 +168,8 @@ namespace psmpm
                   double                  *volume_ratio) const;
 
       /// What the update of every particle of a batch uses: the Lame
-      /// constants, the reference density, and 1 / E and nu for the
-      /// elastic compliance.
+      /// constants, the reference density, 1 / E and nu for the elastic
+      /// compliance, and 1 / rho0.
       struct BatchConstants
       {
         double lambda;
@@ -171,6 +177,7 @@ namespace psmpm
         double rho0;
         double inv_e;
         double nu;
+        double inv_rho0;
       };
 
       /// After the return of the principal stresses @p trial to @p sigma:
@@ -249,6 +256,18 @@ namespace psmpm
                           const double                 radius,
                           double                      *block,
                           std::array<double, 4>       &t) const;
+
+      /// After a return that mapped the plane-strain trial stress in its
+      /// own x-y frame (a Return with returns_in_plane, see
+      /// update_plane_strain()): the plastic strain increment @p ep =
+      /// (xx, yy, xy, zz) (tensor shear), its equivalent @p d_kappa and the
+      /// plastic work at the returned stress @p t into @p block.
+      static void
+      add_plastic_increment(const BatchConstants        &c,
+                            const std::array<double, 4> &t,
+                            const std::array<double, 4> &ep,
+                            const double                 d_kappa,
+                            double                      *block);
 
     protected:
       bool

@@ -198,6 +198,28 @@ namespace psmpm
 
 
     template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::add_plastic_increment(
+      const BatchConstants        &c,
+      const std::array<double, 4> &t,
+      const std::array<double, 4> &ep,
+      const double                 d_kappa,
+      double                      *block)
+    {
+      block[plastic_xx] += ep[0];
+      block[2] += ep[1];
+      block[3] += ep[2];
+      block[4] += ep[3];
+      block[kappa_column] += d_kappa;
+      block[work_column] +=
+        block[ratio_column] *
+        (t[0] * ep[0] + t[1] * ep[1] + 2 * t[2] * ep[2] + t[3] * ep[3]) *
+        c.inv_rho0;
+    }
+
+
+
+    template <int dim>
     template <typename Return>
     DEAL_II_ALWAYS_INLINE inline void
     PlasticHypoelastic<dim>::update_plane_strain(const Return          &ret,
@@ -217,9 +239,28 @@ namespace psmpm
       const double centre  = 0.5 * (t[0] + t[1]);
       const double half    = 0.5 * (t[0] - t[1]);
       const double radius2 = half * half + t[2] * t[2];
+      // A model whose return keeps the deviator's direction maps t
+      // itself: no eigenvalues, no rotation back, the plastic strain in
+      // closed form (with softening, the iteration on kappa of
+      // finish_return() in the principal frame below).
+      bool in_plane = false;
+      if constexpr (Return::returns_in_plane)
+        in_plane = !softens();
       // The elastic test inline and without the square root (most
       // particles, most steps); the return out of line.
-      if (!ret.inside_plane(s, centre, radius2, t[3]))
+      if (ret.inside_plane(s, centre, radius2, t[3]))
+        ;
+      else if (in_plane)
+        {
+          if constexpr (Return::returns_in_plane)
+            {
+              std::array<double, 4> ep;
+              double                d_kappa;
+              if (ret.in_plane(s, t, ep, d_kappa))
+                add_plastic_increment(c, t, ep, d_kappa, block);
+            }
+        }
+      else
         {
           const double                radius = std::sqrt(radius2);
           const std::array<double, 3> trial  = {
@@ -250,11 +291,12 @@ namespace psmpm
                                      2 * this->shear_modulus(),
                                      this->density,
                                      1 / this->youngs_modulus,
-                                     this->poisson_ratio};
+                                     this->poisson_ratio,
+                                     1 / this->density};
       const unsigned int   stride = this->state_stride();
       Strength             base   = strength(0);
       ret.prepare(base);
-      // Outside the loop: Strength is 30 values, not to be initialised
+      // Outside the loop: Strength is 33 values, not to be initialised
       // for every particle.
       Strength softened;
       for (unsigned int i = 0; i < n; ++i)
