@@ -101,6 +101,7 @@ namespace psmpm
 
       statistics.impulse += J;
       statistics.normal_impulse += m * w_n;
+      statistics.tangential_impulse += m * s * w_t_norm;
       statistics.normal_work -= 0.5 * m * w_n * w_n;
       statistics.friction_work -=
         0.5 * m * (1 - (1 - s) * (1 - s)) * w_t_norm * w_t_norm;

@@ -80,6 +80,8 @@ namespace psmpm
       contact.check_bodies(n_bodies);
       const unsigned int n_pairs = n_bodies * (n_bodies - 1) / 2;
       pair_force.assign(n_pairs, Tensor<1, dim>());
+      normal_force.assign(n_pairs, 0.);
+      friction_force.assign(n_pairs, 0.);
       friction_work.assign(n_pairs, 0.);
       normal_work.assign(n_pairs, 0.);
     }
@@ -313,7 +315,7 @@ namespace psmpm
       if (n_ranks == 1)
         return;
       // Every rank keeps the totals (statistics, checkpoints).
-      constexpr unsigned int w = dim + 2;
+      constexpr unsigned int w = dim + 4;
       std::vector<double>    values(step_statistics.size() * w);
       for (unsigned int q = 0; q < step_statistics.size(); ++q)
         {
@@ -321,14 +323,18 @@ namespace psmpm
             values[q * w + d] = step_statistics[q].impulse[d];
           values[q * w + dim]     = step_statistics[q].friction_work;
           values[q * w + dim + 1] = step_statistics[q].normal_work;
+          values[q * w + dim + 2] = step_statistics[q].normal_impulse;
+          values[q * w + dim + 3] = step_statistics[q].tangential_impulse;
         }
       Utilities::MPI::sum(values, comm, values);
       for (unsigned int q = 0; q < step_statistics.size(); ++q)
         {
           for (unsigned int d = 0; d < dim; ++d)
             step_statistics[q].impulse[d] = values[q * w + d];
-          step_statistics[q].friction_work = values[q * w + dim];
-          step_statistics[q].normal_work   = values[q * w + dim + 1];
+          step_statistics[q].friction_work      = values[q * w + dim];
+          step_statistics[q].normal_work        = values[q * w + dim + 1];
+          step_statistics[q].normal_impulse     = values[q * w + dim + 2];
+          step_statistics[q].tangential_impulse = values[q * w + dim + 3];
         }
     }
 
@@ -376,6 +382,8 @@ namespace psmpm
       constexpr unsigned int w = width<dim>;
       for (auto &f : pair_force)
         f = Tensor<1, dim>();
+      std::fill(normal_force.begin(), normal_force.end(), 0.);
+      std::fill(friction_force.begin(), friction_force.end(), 0.);
       moving_increment.clear();
       any_contact = find_contact_dofs(state) > 0;
       if (!any_contact)
@@ -433,7 +441,9 @@ namespace psmpm
       const unsigned int n_pairs = pair_force.size();
       for (unsigned int q = 0; q < n_pairs; ++q)
         {
-          pair_force[q] = step_statistics[q].impulse / dt;
+          pair_force[q]     = step_statistics[q].impulse / dt;
+          normal_force[q]   = step_statistics[q].normal_impulse / dt;
+          friction_force[q] = step_statistics[q].tangential_impulse / dt;
           friction_work[q] += step_statistics[q].friction_work;
           normal_work[q] += step_statistics[q].normal_work;
         }
@@ -586,6 +596,8 @@ namespace psmpm
               std::to_string(a + 1) + "_" + std::to_string(b + 1);
             for (unsigned int d = 0; d < dim; ++d)
               names.push_back("contact_force_" + pair + axis[d]);
+            names.push_back("normal_force_" + pair);
+            names.push_back("friction_force_" + pair);
             names.push_back("friction_work_" + pair);
             names.push_back("normal_work_" + pair);
           }
@@ -602,6 +614,8 @@ namespace psmpm
         {
           for (unsigned int d = 0; d < dim; ++d)
             values.push_back(pair_force[q][d]);
+          values.push_back(normal_force[q]);
+          values.push_back(friction_force[q]);
           values.push_back(friction_work[q]);
           values.push_back(normal_work[q]);
         }

@@ -7,12 +7,13 @@
 // (a) a block on a slab under gravity tilted by 30 degrees, mu = 0.3
 //     (tan 30 > mu): the block's centre accelerates at
 //     g (sin 30 - mu cos 30) = 2.356 m/s^2 (a quadratic fit of its x over
-//     0.15 s) within 1 % (linear) and 2 % (Powell-Sabin); the friction
-//     force on it is at most mu times the normal force and the friction
-//     work negative;
-// (b) mu = 0.7 (> tan 30): the block moves less than a sixth of the
-//     sliding block's distance (it creeps at a few mm/s after a start
-//     transient; doc/contact.md);
+//     0.15 s) within 1 %; the friction force on it (the sum of the
+//     nodes' tangential impulses) is at most mu times the normal force,
+//     the mean contact force gives the block (20 kg/m) the fitted
+//     acceleration within 1 %, and the friction work is negative;
+// (b) mu = 0.7 (> tan 30): the block moves less than a tenth (linear)
+//     and a twentieth (Powell-Sabin) of the sliding block's distance (it
+//     creeps at a few mm/s; doc/contact.md);
 // (c) two elastic disks meeting head-on, frictionless: the momentum stays
 //     zero to round-off, the total energy never exceeds the initial by
 //     2 % and ends within 2 % of it (during the impact it dips by about
@@ -129,14 +130,27 @@ main(int argc, char **argv)
       const double expected = g * (std::sin(theta) - 0.3 * std::cos(theta));
       std::cout << basis << ": a " << a << " (closed form " << expected << ")"
                 << std::endl;
-      PSMPM_CHECK(out, std::abs(a / expected - 1) < (linear ? 0.01 : 0.02));
-      double max_ratio = 0;
-      for (std::size_t i = 0; i < s["time"].size(); ++i)
-        if (s["contact_force_1_2_y"][i] > 0)
-          max_ratio = std::max(max_ratio,
-                               -s["contact_force_1_2_x"][i] /
-                                 s["contact_force_1_2_y"][i]);
-      PSMPM_CHECK(out, max_ratio > 0.2 && max_ratio <= 0.3 * (1 + 1e-6));
+      PSMPM_CHECK(out, std::abs(a / expected - 1) < 0.01);
+      // Coulomb's bound holds node by node, so for the sums of the
+      // impulses' magnitudes; the force's components (the normal of the
+      // slab's mass gradient tilts by a fraction of a milliradian) and
+      // the centre's acceleration agree with it on average.
+      // (statistics.txt has 9 digits: 1e-7 of the ratio is its round-off)
+      double max_ratio = 0, impulse_x = 0, time = 0;
+      for (std::size_t i = 1; i < s["time"].size(); ++i)
+        {
+          if (s["normal_force_1_2"][i] > 0)
+            max_ratio =
+              std::max(max_ratio,
+                       s["friction_force_1_2"][i] / s["normal_force_1_2"][i]);
+          impulse_x += s["contact_force_1_2_x"][i] * s["dt"][i];
+          time += s["dt"][i];
+        }
+      const double a_force = g * std::sin(theta) + impulse_x / time / 20.;
+      std::cout << basis << ": friction / normal force at most " << max_ratio
+                << ", a from the mean contact force " << a_force << std::endl;
+      PSMPM_CHECK(out, max_ratio > 0.2 && max_ratio <= 0.3 * (1 + 1e-7));
+      PSMPM_CHECK(out, std::abs(a_force / a - 1) < 0.01);
       PSMPM_CHECK(out, s["friction_work_1_2"].back() < 0);
       const double slid = s["body1_x"].back() - s["body1_x"].front();
 
@@ -150,7 +164,7 @@ main(int argc, char **argv)
       const double crept = s["body1_x"].back() - s["body1_x"].front();
       std::cout << basis << ": slid " << slid << ", crept " << crept
                 << std::endl;
-      PSMPM_CHECK(out, std::abs(crept) < slid / 6);
+      PSMPM_CHECK(out, std::abs(crept) < slid / (linear ? 10 : 20));
 
       // (c)
       s              = run_scene(out,

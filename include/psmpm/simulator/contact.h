@@ -74,10 +74,13 @@ namespace psmpm
     struct ContactPairStatistics
     {
       Tensor<1, dim> impulse;
-      double         normal_impulse  = 0;
-      double         friction_work   = 0;
-      double         normal_work     = 0;
-      unsigned int   n_contact_nodes = 0;
+      double         normal_impulse = 0;
+      /// Sum over the nodes of |J_t|, the tangential impulse's magnitude:
+      /// at most mu times normal_impulse, node by node.
+      double       tangential_impulse = 0;
+      double       friction_work      = 0;
+      double       normal_work        = 0;
+      unsigned int n_contact_nodes    = 0;
     };
 
     /**

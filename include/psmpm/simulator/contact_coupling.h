@@ -117,8 +117,11 @@ namespace psmpm
            Tensor<2, dim>   *increments) const;
 
       /// Per pair a-b: contact_force_a_b_x (, _y), the force on body a
-      /// over the last step, and friction_work_a_b, normal_work_a_b, the
-      /// kinetic energy removed since the start (<= 0).
+      /// over the last step; normal_force_a_b and friction_force_a_b, the
+      /// sums over the nodes of the normal and tangential impulses'
+      /// magnitudes over dt (friction <= mu normal, node by node); and
+      /// friction_work_a_b, normal_work_a_b, the kinetic energy removed
+      /// since the start (<= 0).
       std::vector<std::string>
       statistics_columns() const;
 
@@ -196,7 +199,10 @@ namespace psmpm
       /// Per pair (all ranks): force of the last step and the works
       /// accumulated since the start.
       std::vector<Tensor<1, dim>> pair_force;
-      std::vector<double>         friction_work, normal_work;
+      /// Per pair, the step's sums over the nodes of the normal and the
+      /// tangential impulse magnitudes over dt.
+      std::vector<double> normal_force, friction_force;
+      std::vector<double> friction_work, normal_work;
       /// Whether any rank has contact DoFs in this step.
       bool         any_contact = false;
       MPI_Comm     comm        = MPI_COMM_SELF;
