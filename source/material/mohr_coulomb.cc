@@ -142,6 +142,9 @@ namespace psmpm
         main_equivalent = 23,
         inv_e_index     = 24,
         nu_index        = 25,
+        /// 2/3 dev b_main : dev b_edge for edge 1 and 2 (the cross term
+        /// of an edge return's equivalent plastic strain).
+        edge_equivalent = 26,
       };
 
       /// The constants of one return: sin phi, sin psi, k = 2 c cos phi,
@@ -214,11 +217,15 @@ namespace psmpm
             return false;
           }
         y = {{x[0] - dl * Db[0], x[1] - dl * Db[1], x[2] - dl * Db[2]}};
-        // Refined once (see return_to_active_set()).
+        multiplier = dl;
+        if (acceptable(y, s.sin_phi, k, s.tension_cutoff, s.cohesion))
+          return true;
+        // Refined once where the result is not acceptable (see
+        // return_to_active_set()).
         const double d2 = (a0 * y[0] + a2 * y[2] - k) * inv_denominator;
         for (unsigned int d = 0; d < 3; ++d)
           y[d] -= d2 * Db[d];
-        multiplier = dl + d2;
+        multiplier += d2;
         return acceptable(y, s.sin_phi, k, s.tension_cutoff, s.cohesion);
       }
 
@@ -236,28 +243,27 @@ namespace psmpm
       return_to_edge(const std::array<double, 3> &x,
                      const Strength              &s,
                      const unsigned int           e,
-                     std::array<double, 3>       &y)
+                     std::array<double, 3>       &y,
+                     double                      &main_multiplier,
+                     double                      &edge_multiplier)
       {
         const double *const E   = &s.derived[edge_block + edge_size * (e - 1)];
         const double        inv = E[7];
         if (inv == 0)
           return false;
-        const double                a0 = 1 + s.sin_phi, a2 = -(1 - s.sin_phi);
-        const double                k  = s.derived[k_index];
-        const double *const         Dm = &s.derived[main_db];
-        const std::array<double, 3> am = {{a0, 0, a2}};
-        // The second plane's normal (0, a0, a2) or (a0, a2, 0) as three
-        // selected values: an array chosen between two would be stored
-        // and loaded back whole, a stall on every edge return.
-        const double ae0 = e == 1 ? 0 : a0, ae1 = e == 1 ? a0 : a2,
-                     ae2 = e == 1 ? a2 : 0;
-        const double A00 = E[3], A01 = E[4], A10 = E[5], A11 = E[6];
-        const auto   solve =
+        const double        a0 = 1 + s.sin_phi, a2 = -(1 - s.sin_phi);
+        const double        k   = s.derived[k_index];
+        const double *const Dm  = &s.derived[main_db];
+        const double        A00 = E[3], A01 = E[4], A10 = E[5], A11 = E[6];
+        // The second plane's normal is (0, a0, a2) or (a0, a2, 0): its
+        // residual is the main plane's with z_0 or z_2 replaced by z_1.
+        const auto solve =
           [&](const std::array<double, 3> &z, double &d0, double &d1) {
-            const double r0 = dot(am, z) - k,
-                         r1 = ae0 * z[0] + ae1 * z[1] + ae2 * z[2] - k;
-            d0              = (r0 * A11 - A01 * r1) * inv;
-            d1              = (A00 * r1 - A10 * r0) * inv;
+            const double r0 = a0 * z[0] + a2 * z[2] - k;
+            const double r1 =
+              e == 1 ? a0 * z[1] + a2 * z[2] - k : a0 * z[0] + a2 * z[1] - k;
+            d0 = (r0 * A11 - A01 * r1) * inv;
+            d1 = (A00 * r1 - A10 * r0) * inv;
           };
         double d0, d1;
         solve(x, d0, d1);
@@ -265,9 +271,19 @@ namespace psmpm
           return false;
         for (unsigned int d = 0; d < 3; ++d)
           y[d] = x[d] - d0 * Dm[d] - d1 * E[d];
-        solve(y, d0, d1); // refined once, as in return_to_active_set()
+        main_multiplier = d0;
+        edge_multiplier = d1;
+        if (acceptable(y, s.sin_phi, k, s.tension_cutoff, s.cohesion))
+          return true;
+        // Refined once, as in return_to_active_set(), where the residual's
+        // round-off of the trial stress' size is not round-off of y's
+        // (near the apex).
+        double r0, r1;
+        solve(y, r0, r1);
         for (unsigned int d = 0; d < 3; ++d)
-          y[d] -= d0 * Dm[d] + d1 * E[d];
+          y[d] -= r0 * Dm[d] + r1 * E[d];
+        main_multiplier += r0;
+        edge_multiplier += r1;
         return acceptable(y, s.sin_phi, k, s.tension_cutoff, s.cohesion);
       }
 
@@ -408,38 +424,71 @@ namespace psmpm
         return true;
       }
 
+      /// How return_sorted() ended: on the main plane (edge 0, multiplier
+      /// main) or on edge 1 or 2 (the multipliers main and second of its
+      /// two planes), or elsewhere (edge -1).
+      struct ReturnPath
+      {
+        int    edge = -1;
+        double main = 0, second = 0;
+      };
+
       /// The return of the sorted principal stresses @p x (x_1 >= x_2 >=
       /// x_3) for the prepared @p strength: false if they are inside the
-      /// surface; otherwise true and the returned ones in @p y, with
-      /// @p main_multiplier the plastic multiplier if the main plane is
-      /// the answer (-1 otherwise). The main
-      /// plane, then the edge its result points to (y_2 < y_3: sigma_2 =
-      /// sigma_3; else sigma_1 = sigma_2), then the other edge, all in
-      /// closed form (what most yielding particles need: the main plane,
-      /// or an edge in uniaxial and triaxial states), then every active
-      /// set.
+      /// surface; otherwise true, the returned ones in @p y and how in
+      /// @p path. The main plane, then the edge its result points to (y_2
+      /// < y_3: sigma_2 = sigma_3; else sigma_1 = sigma_2), then the other
+      /// edge, all in closed form (what most yielding particles need: the
+      /// main plane, or an edge in uniaxial and triaxial states), then
+      /// every active set. Where the main plane's result would be
+      /// unsorted by more than round-off (known from its multiplier
+      /// alone: y_1 - y_2 and y_2 - y_3 are linear in it), it is not the
+      /// answer and the edge it points to comes first; the main plane is
+      /// then tried after both edges, before the active sets (which leave
+      /// it out).
       template <typename Strength>
       DEAL_II_ALWAYS_INLINE inline bool
       return_sorted(const Strength              &strength,
                     const std::array<double, 3> &x,
                     std::array<double, 3>       &y,
-                    double                      &main_multiplier)
+                    ReturnPath                  &path)
       {
         const double sp = strength.sin_phi;
-        main_multiplier = -1;
-        if ((1 + sp) * x[0] - (1 - sp) * x[2] - strength.derived[k_index] <=
-              0 &&
-            x[0] <= strength.tension_cutoff)
+        const auto  &d  = strength.derived;
+        path.edge       = -1;
+        const double f  = (1 + sp) * x[0] - (1 - sp) * x[2] - d[k_index];
+        if (f <= 0 && x[0] <= strength.tension_cutoff)
           return false;
-        if (!return_to_main_plane(x, strength, y, main_multiplier))
+        const double dl  = f * d[main_inverse];
+        const double g01 = (x[0] - x[1]) - dl * (d[main_db] - d[main_db + 1]);
+        const double g12 =
+          (x[1] - x[2]) - dl * (d[main_db + 1] - d[main_db + 2]);
+        const double tolerance  = 1e-12 * (std::abs(x[0]) + std::abs(x[1]) +
+                                          std::abs(x[2]) + strength.cohesion);
+        const bool   main_first = std::min(g01, g12) >= -tolerance;
+        unsigned int first      = 1 + static_cast<unsigned int>(g12 < 0);
+        if (main_first)
           {
-            main_multiplier = -1;
-            const unsigned int first =
-              1 + static_cast<unsigned int>(y[1] < y[2]);
-            if (!return_to_edge(x, strength, first, y) &&
-                !return_to_edge(x, strength, 3 - first, y))
-              return_by_active_sets_or_apex(x, strength, y);
+            if (return_to_main_plane(x, strength, y, path.main))
+              {
+                path.edge = 0;
+                return true;
+              }
+            first = 1 + static_cast<unsigned int>(y[1] < y[2]);
           }
+        if (return_to_edge(x, strength, first, y, path.main, path.second))
+          path.edge = first;
+        else if (return_to_edge(x,
+                                strength,
+                                3 - first,
+                                y,
+                                path.main,
+                                path.second))
+          path.edge = 3 - first;
+        else if (!main_first && return_to_main_plane(x, strength, y, path.main))
+          path.edge = 0;
+        else
+          return_by_active_sets_or_apex(x, strength, y);
         return true;
       }
 
@@ -460,8 +509,8 @@ namespace psmpm
         const std::array<double, 3> x = {
           {sigma[o[0]], sigma[o[1]], sigma[o[2]]}};
         std::array<double, 3> y;
-        double                main_multiplier;
-        if (!return_sorted(strength, x, y, main_multiplier))
+        ReturnPath            path;
+        if (!return_sorted(strength, x, y, path))
           return false;
         for (unsigned int d = 0; d < 3; ++d)
           sigma[o[d]] = y[d];
@@ -478,7 +527,10 @@ namespace psmpm
       /// cos and sin of 2 theta from t. On the main plane (most yielding
       /// particles) the plastic strain is the multiplier times the flow
       /// direction and its equivalent the multiplier times a constant:
-      /// no second square root.
+      /// no second square root; on an edge the two multipliers times the
+      /// two planes' flow directions, the equivalent a quadratic form in
+      /// them (constants prepared once per batch); elsewhere C^-1 (trial -
+      /// sigma).
       template <typename Strength>
       DEAL_II_ALWAYS_INLINE inline bool
       return_plane_strain(const Strength        &strength,
@@ -493,15 +545,30 @@ namespace psmpm
         const std::array<double, 3> x = {
           {std::max(a, z), std::max(b, std::min(a, z)), std::min(b, z)}};
         std::array<double, 3> y, e;
-        double                dl;
-        if (!return_sorted(strength, x, y, dl))
+        ReturnPath            path;
+        if (!return_sorted(strength, x, y, path))
           return false;
-        const auto &d = strength.derived;
-        if (dl >= 0)
+        const auto  &d  = strength.derived;
+        const double b0 = 1 + strength.sin_psi, b2 = -(1 - strength.sin_psi);
+        if (path.edge == 0)
           {
-            const double sin_psi = strength.sin_psi;
-            e       = {{dl * (1 + sin_psi), 0, -dl * (1 - sin_psi)}};
-            d_kappa = dl * d[main_equivalent];
+            const double dl = path.main;
+            e               = {{dl * b0, 0, dl * b2}};
+            d_kappa         = dl * d[main_equivalent];
+          }
+        else if (path.edge > 0)
+          {
+            // M b_main + S b_edge, b_edge = (0, b0, b2) or (b0, b2, 0);
+            // the equivalent strain a quadratic form in (M, S).
+            const double m = path.main, s = path.second;
+            const bool   one = path.edge == 1;
+            e                = {{m * b0 + (one ? 0 : s * b0),
+                                 s * (one ? b0 : b2),
+                                 m * b2 + (one ? s * b2 : 0)}};
+            const double q   = d[main_equivalent] * d[main_equivalent];
+            const double cross =
+              one ? d[edge_equivalent] : d[edge_equivalent + 1];
+            d_kappa = std::sqrt(q * (m * m + s * s) + 2 * cross * m * s);
           }
         else
           {
@@ -629,8 +696,12 @@ namespace psmpm
       const double mb    = (b0 + b2) * (1. / 3);
       d[main_equivalent] = std::sqrt(
         2. / 3 * ((b0 - mb) * (b0 - mb) + mb * mb + (b2 - mb) * (b2 - mb)));
-      d[inv_e_index] = 1 / this->youngs_modulus;
-      d[nu_index]    = this->poisson_ratio;
+      // dev b_main : dev b_edge = b_main . b_edge - 3 mb^2, b_main . b_edge
+      // = b2^2 (edge 1: b_edge = (0, b0, b2)) or b0^2 (edge 2: (b0, b2, 0)).
+      d[edge_equivalent]     = 2. / 3 * (b2 * b2 - 3 * mb * mb);
+      d[edge_equivalent + 1] = 2. / 3 * (b0 * b0 - 3 * mb * mb);
+      d[inv_e_index]         = 1 / this->youngs_modulus;
+      d[nu_index]            = this->poisson_ratio;
       for (const unsigned int e : {1u, 2u})
         {
           const std::array<double, 3> ae =

@@ -30,10 +30,14 @@ namespace psmpm
      * non-associated potential) the stress goes to the apex
      * min(t, c cot phi) (1, 1, 1). An active set is accepted when its
      * result violates no plane by more than 1e-13 (|sigma| + c), after one
-     * step of iterative refinement; tests/material/mohr_coulomb_01
-     * asserts f <= 1e-10 (|sigma| + c) after every update. The main
-     * plane and the two edges, where most returns end, are solved in
-     * closed form first.
+     * step of iterative refinement (in the closed forms only where the
+     * unrefined result is not accepted: near the apex);
+     * tests/material/mohr_coulomb_01 asserts f <= 1e-10 (|sigma| + c)
+     * after every update. The main plane and the two edges, where most
+     * returns end, are solved in closed form first; where the main
+     * plane's result would leave the sextant (known from its multiplier)
+     * the edge comes first. In plane strain the plastic strain of a main
+     * plane or edge return is the multipliers times the flow directions.
      */
     template <int dim>
     class MohrCoulomb : public PlasticHypoelastic<dim>
