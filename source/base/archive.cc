@@ -5,6 +5,7 @@
 
 #include <psmpm/base/archive.h>
 #include <psmpm/base/checked_file.h>
+#include <psmpm/base/fnv1a.h>
 
 #include <cerrno>
 #include <cstring>
@@ -60,18 +61,6 @@ namespace psmpm
     silence_hdf5()
     {
       H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    }
-
-    std::uint64_t
-    fnv1a(std::uint64_t h, const void *data, const std::size_t n)
-    {
-      const auto *bytes = static_cast<const unsigned char *>(data);
-      for (std::size_t i = 0; i < n; ++i)
-        {
-          h ^= bytes[i];
-          h *= 1099511628211ULL;
-        }
-      return h;
     }
 
     std::vector<hsize_t>
@@ -324,7 +313,7 @@ namespace psmpm
   std::uint64_t
   Archive::checksum() const
   {
-    std::uint64_t h = 14695981039346656037ULL;
+    std::uint64_t h = fnv1a_basis;
     for (const auto &[name, e] : entries)
       {
         h              = fnv1a(h, name.data(), name.size());

@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_in.h>
 
+#include <psmpm/base/fnv1a.h>
 #include <psmpm/base/root_errors.h>
 #include <psmpm/mesh/gmsh_file.h>
 
@@ -287,25 +288,6 @@ namespace psmpm
         std::vector<std::vector<long long>> element_nodes;
       };
 
-      /// The 64-bit FNV-1a checksum of the bytes of @p file (0 if it
-      /// cannot be read: check_msh() has said why by then).
-      std::uint64_t
-      checksum_of(const std::string &file)
-      {
-        std::ifstream     in(file, std::ios::binary);
-        std::uint64_t     hash = 14695981039346656037ull;
-        std::vector<char> block(1 << 16);
-        while (in)
-          {
-            in.read(block.data(), block.size());
-            for (std::streamsize k = 0; k < in.gcount(); ++k)
-              {
-                hash ^= static_cast<unsigned char>(block[k]);
-                hash *= 1099511628211ull;
-              }
-          }
-        return in.bad() ? 0 : hash;
-      }
     } // namespace
 
 
@@ -348,7 +330,8 @@ namespace psmpm
       // Every rank reads the file for itself: different bytes (another
       // file under the same name) would give the ranks different meshes.
       const auto sums =
-        dealii::Utilities::MPI::all_gather(comm, checksum_of(file));
+        dealii::Utilities::MPI::all_gather(comm,
+                                           fnv1a_of_file(file).value_or(0));
       for (unsigned int r = 1; r < n_ranks; ++r)
         AssertThrow(sums[r] == sums[0],
                     dealii::ExcMessage(

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <psmpm/base/checked_file.h>
+#include <psmpm/base/fnv1a.h>
 #include <psmpm/base/root_errors.h>
 #include <psmpm/simulator/checkpoint.h>
 
@@ -101,24 +102,11 @@ namespace psmpm
       std::string
       checksum_of(const std::string &file)
       {
-        std::ifstream in(file, std::ios::binary);
-        if (!in.is_open() || fs::is_directory(file))
-          return "";
-        std::uint64_t     hash = 14695981039346656037ull;
-        std::vector<char> block(1 << 16);
-        while (in)
-          {
-            in.read(block.data(), block.size());
-            for (std::streamsize k = 0; k < in.gcount(); ++k)
-              {
-                hash ^= static_cast<unsigned char>(block[k]);
-                hash *= 1099511628211ull;
-              }
-          }
-        if (in.bad())
+        const auto hash = fnv1a_of_file(file);
+        if (!hash)
           return "";
         std::ostringstream hex;
-        hex << std::hex << std::setw(16) << std::setfill('0') << hash;
+        hex << std::hex << std::setw(16) << std::setfill('0') << *hash;
         return hex.str();
       }
 
