@@ -11,6 +11,7 @@
 // centres, contact force and works (7 digits), and the largest contact
 // force of the run.
 #include "../app_tests.h"
+#include "../mpm_tests.h"
 
 #include <iomanip>
 
@@ -36,39 +37,21 @@ main(int argc, char **argv)
       out << basis << ": exit code " << code << std::endl;
       if (!is_root_rank())
         continue;
-      std::ifstream            in(directory + "/statistics.txt");
-      std::vector<std::string> names;
-      std::vector<double>      last;
-      double                   max_force = 0;
-      std::string              line;
-      while (std::getline(in, line))
-        {
-          if (line.empty())
-            continue;
-          if (line[0] == '#')
-            {
-              names.push_back(line.substr(line.find(':') + 2));
-              continue;
-            }
-          std::istringstream s(line);
-          last.assign(names.size(), 0.);
-          for (auto &v : last)
-            s >> v;
-          for (unsigned int c = 0; c < names.size(); ++c)
-            if (names[c] == "contact_force_1_2_x")
-              max_force = std::max(max_force, std::abs(last[c]));
-        }
-      for (unsigned int c = 0; c < names.size(); ++c)
-        for (const char *n : {"kinetic_energy",
-                              "strain_energy",
-                              "body1_x",
-                              "body1_y",
-                              "contact_force_1_2_x",
-                              "contact_force_1_2_y",
-                              "normal_work_1_2"})
-          if (names[c] == n)
-            out << "  " << n << " " << std::setprecision(7) << last[c]
-                << std::endl;
+      const StatisticsTable table(directory);
+      double                max_force = 0;
+      for (const double f : table.column("contact_force_1_2_x"))
+        max_force = std::max(max_force, std::abs(f));
+      for (const auto &n : table.names)
+        for (const char *printed : {"kinetic_energy",
+                                    "strain_energy",
+                                    "body1_x",
+                                    "body1_y",
+                                    "contact_force_1_2_x",
+                                    "contact_force_1_2_y",
+                                    "normal_work_1_2"})
+          if (n == printed)
+            out << "  " << n << " " << std::setprecision(7)
+                << table.column(n).back() << std::endl;
       out << "  largest |contact_force_1_2_x| " << std::setprecision(7)
           << max_force << std::endl;
       PSMPM_CHECK(out, max_force > 0);

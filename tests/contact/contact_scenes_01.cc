@@ -21,6 +21,7 @@
 //     the disks separate: their centres end more than two cells beyond
 //     touching distance, the contact force is zero at the end.
 #include "../app_tests.h"
+#include "../mpm_tests.h"
 
 #include <cmath>
 #include <map>
@@ -31,27 +32,10 @@ namespace
   std::map<std::string, std::vector<double>>
   read_statistics(const std::string &directory)
   {
-    std::ifstream            in(directory + "/statistics.txt");
-    std::vector<std::string> names;
+    const StatisticsTable                      table(directory);
     std::map<std::string, std::vector<double>> columns;
-    std::string                                line;
-    while (std::getline(in, line))
-      {
-        if (line.empty())
-          continue;
-        if (line[0] == '#')
-          {
-            names.push_back(line.substr(line.find(':') + 2));
-            continue;
-          }
-        std::istringstream s(line);
-        for (const auto &n : names)
-          {
-            std::string v;
-            s >> v;
-            columns[n].push_back(v == "-" ? 0. : std::stod(v));
-          }
-      }
+    for (const auto &n : table.names)
+      columns[n] = table.column(n);
     return columns;
   }
 
