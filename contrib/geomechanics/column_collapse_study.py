@@ -3,7 +3,7 @@
 
   /usr/bin/python3 contrib/geomechanics/column_collapse_study.py
       [build/psmpm] [work dir] [--ratios 0.5,1,2,3,4] [--cells 20]
-      [--bases linear,powell-sabin] [--floor 0.36|no-slip|frictionless]
+      [--bases linear,powell-sabin] [--floor 0.36|1e6|no-slip|frictionless]
       [--set "Section/Entry=value" ...]
 
 prm/granular_column_collapse.prm (aluminium rods of Bui et al. 2008:
@@ -19,6 +19,11 @@ columns:
   h_inf = h0                         (a < 0.65)
   h0 / h_inf = 1.42 a^(2/3)          (a > 0.65)
   (d_inf - d0) / d0 = 3.25 a^0.96    (0.65 < a < 1.5), 3.80 a^0.73 (a > 1.5)
+From the last particle output also h_wall (the highest particle within
+one cell of the wall: equal to body1_y_max unless a particle was thrown
+up) and V/V0 (the particles' total volume over the initial one: the
+deposit's dilation). --floor takes a friction coefficient (1e6: a rough
+floor that sticks wherever it pushes), no-slip or frictionless.
 Writes column_collapse.tsv and column_collapse.png into the work
 directory (copy them to doc/data/ and doc/images/), prints the table with
 CPU and wall seconds per run. Reports; never fails on numbers.
@@ -34,6 +39,8 @@ import time
 
 import matplotlib
 matplotlib.use("Agg")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "lib"))
+from psmpm_output import vtu_arrays  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
 here = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -92,6 +99,18 @@ def first_and_last_rows(path):
             dict(zip(names, map(float, row))))
 
 
+def deposit(out, h):
+    """The deposit from the last particle output: the total volume over
+    the initial one, and the height at the wall (the highest particle
+    within one cell of it, against body1_y_max: a particle thrown up
+    would show as a difference)."""
+    last = max(f for f in os.listdir(out) if f.startswith("particles-") and f.endswith(".000.vtu"))
+    p = vtu_arrays(os.path.join(out, last))
+    initial = sum(v / r for v, r in zip(p["volume"], p["volume_ratio"]))
+    at_wall = [pt[1] for pt in p["Points"] if pt[0] < h]
+    return sum(p["volume"]) / initial, max(at_wall) if at_wall else float("nan")
+
+
 def run(a, basis):
     h0 = a * d0
     h = h0 / args.cells
@@ -123,6 +142,7 @@ def run(a, basis):
     if result.returncode != 0:
         print(f"a = {a} {basis}: exit {result.returncode}: {summary.get('reason', '')}", file=sys.stderr)
     first, row = first_and_last_rows(os.path.join(out, "statistics.txt"))
+    volume, wall_height = deposit(out, h)
     released = -row["gravity_energy"] if row["gravity_energy"] < 0 else float("nan")
     # What is conserved: total (kinetic + strain + gravity + dissipated)
     # minus the floor's friction work.
@@ -130,6 +150,7 @@ def run(a, basis):
     return {
         "a": a, "basis": basis, "status": summary["status"],
         "h_ratio": row["body1_y_max"] / h0,
+        "h_wall": wall_height / h0, "volume": volume,
         "runout": (row["body1_x_max"] - d0) / d0,
         "kinetic_fraction": row["kinetic_energy"] / released if released > 0 else float("nan"),
         "energy_error": balance / released if released > 0 else float("nan"),
@@ -147,19 +168,20 @@ for a in [float(x) for x in args.ratios.split(",")]:
         print(f"a {a:4.2f} {basis:13s} h_inf/h0 {r['h_ratio']:.3f} (law {law_height(a):.3f})"
               f"  (d_inf-d0)/d0 {r['runout']:.3f}"
               f" (law {law_runout(a) if law_runout(a) is not None else float('nan'):.3f})"
+              f"  h_wall/h0 {r['h_wall']:.3f} V/V0 {r['volume']:.2f}"
               f"  Ek/released {r['kinetic_fraction']:.1e} energy {r['energy_error']:+.1e}  CPU {r['cpu']:.1f} s wall {r['wall']:.1f} s"
               f"  {r['status']}", flush=True)
 
 with open(os.path.join(work, "column_collapse.tsv"), "w") as f:
     f.write("a\tbasis\th_inf/h0\tlaw\terror\t(d_inf-d0)/d0\tlaw\terror\tEk/released\t"
-            "energy_error\tcpu_s\twall_s\tparticles\tsteps\tstatus\n")
+            "energy_error\tcpu_s\twall_s\tparticles\tsteps\tstatus\th_wall/h0\tV/V0\n")
     for r in rows:
         lh, lr = law_height(r["a"]), law_runout(r["a"])
         f.write(f"{r['a']}\t{r['basis']}\t{r['h_ratio']:.4f}\t{lh:.4f}\t{r['h_ratio'] / lh - 1:+.3f}\t"
                 f"{r['runout']:.4f}\t{lr if lr is not None else 'nan'}\t"
                 f"{(r['runout'] / lr - 1) if lr else float('nan'):+.3f}\t{r['kinetic_fraction']:.2e}\t"
                 f"{r['energy_error']:.2e}\t{r['cpu']:.2f}\t{r['wall']:.2f}\t{r['particles']}\t"
-                f"{r['steps']}\t{r['status']}\n")
+                f"{r['steps']}\t{r['status']}\t{r['h_wall']:.4f}\t{r['volume']:.3f}\n")
 
 fig, axes = plt.subplots(1, 2, figsize=(10, 4))
 ax = [x / 100 for x in range(30, 460)]

@@ -126,6 +126,71 @@ namespace psmpm
           return return_to_cone(s, sigma);
         }
 
+        /// in_plane_pair() and inside_plane_pair() for two particles (the
+        /// constants of a batch: its Strength).
+        static constexpr bool returns_pairs = true;
+
+        static typename PlasticHypoelastic<dim>::Strength
+        lane_constants(const typename PlasticHypoelastic<dim>::Strength &s)
+        {
+          return s;
+        }
+
+        /// inside_plane() of two particles in Lanes.
+        Lanes::Mask
+        inside_plane_pair(const typename PlasticHypoelastic<dim>::Strength &s,
+                          const Lanes::Value                                c,
+                          const Lanes::Value                                r2,
+                          const Lanes::Value z) const
+        {
+          const Lanes::Value p     = (2. * c + z) * (1. / 3);
+          const Lanes::Value bound = s.derived[1] - s.derived[0] * p;
+          const Lanes::Value j2 =
+            (c - p) * (c - p) + r2 + 0.5 * (z - p) * (z - p);
+          return (bound >= 0) & (j2 <= bound * bound);
+        }
+
+        /// in_plane() of two particles in Lanes onto the cone (not the
+        /// apex): the lanes where that is the answer, with @p t, @p ep and
+        /// @p d_kappa there (operation by operation in_plane()'s).
+        Lanes::Mask
+        in_plane_pair(const typename PlasticHypoelastic<dim>::Strength &s,
+                      Lanes::Value                                      t[4],
+                      Lanes::Value                                      ep[4],
+                      Lanes::Value &d_kappa) const
+        {
+          using Lanes::Value;
+          const double eta = s.derived[0], xi_c = s.derived[1],
+                       eta_bar = s.derived[2];
+          const Value p        = (t[0] + t[1] + t[3]) * (1. / 3);
+          const Value dxx = t[0] - p, dyy = t[1] - p, dzz = t[3] - p,
+                      dxy = t[2];
+          const Value q =
+            Lanes::sqrt(0.5 * (dxx * dxx + dyy * dyy + dzz * dzz) + dxy * dxy);
+          const Value       f         = q + eta * p - xi_c;
+          constexpr double  inv_sqrt3 = 0.57735026918962576451;
+          const double      G         = s.derived[3];
+          const Value       gamma     = f * s.derived[5];
+          const Lanes::Mask cone = ~(f <= 0) & (q - G * gamma >= 0) & (q > 0);
+          if (!Lanes::any(cone))
+            return cone;
+          const Value r          = gamma / q;
+          const Value h          = 0.5 * r;
+          const Value volumetric = eta_bar * gamma * (1. / 3);
+          const Value factor     = 1 - G * r;
+          const Value p_new      = p - s.derived[4] * eta_bar * gamma;
+          d_kappa                = gamma * inv_sqrt3;
+          ep[0]                  = h * dxx + volumetric;
+          ep[1]                  = h * dyy + volumetric;
+          ep[2]                  = h * dxy;
+          ep[3]                  = h * dzz + volumetric;
+          t[0]                   = factor * dxx + p_new;
+          t[1]                   = factor * dyy + p_new;
+          t[2]                   = factor * dxy;
+          t[3]                   = factor * dzz + p_new;
+          return cone;
+        }
+
         /// return_to_cone() of the plane-strain stress t = (xx, yy, xy,
         /// zz) in its own frame: false if it is inside the cone (t
         /// unchanged); otherwise t returned, the plastic strain @p ep =

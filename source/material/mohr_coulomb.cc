@@ -603,6 +603,276 @@ namespace psmpm
 
 
 
+      /// The constants of the returns in Lanes, both lanes alike, made
+      /// once per batch from a prepared Strength: the constants of
+      /// return_common_pair() and inside_plane_lanes() as the scalar
+      /// functions compute them, each edge's constants as edge 1's and
+      /// the bits in which edge 2's differ (for Lanes::pick()).
+      struct LaneConstants
+      {
+        template <typename Strength>
+        explicit LaneConstants(const Strength &s)
+        {
+          using Lanes::broadcast;
+          const auto  &d  = s.derived;
+          const double sp = s.sin_phi;
+          one_plus_sp     = broadcast(1 + sp);
+          one_minus_sp    = broadcast(1 - sp);
+          a2              = broadcast(-(1 - sp));
+          k               = broadcast(d[k_index]);
+          cutoff          = broadcast(s.tension_cutoff);
+          cohesion        = broadcast(s.cohesion);
+          main_inverse    = broadcast(d[DerivedIndex::main_inverse]);
+          for (unsigned int i = 0; i < 3; ++i)
+            Db[i] = broadcast(d[main_db + i]);
+          Db01 = broadcast(d[main_db] - d[main_db + 1]);
+          Db12 = broadcast(d[main_db + 1] - d[main_db + 2]);
+          for (unsigned int i = 0; i < 8; ++i)
+            {
+              edge[i] = broadcast(d[edge_block + i]);
+              edge_bits[i] =
+                Lanes::differing_bits(edge[i],
+                                      broadcast(d[edge_block + edge_size + i]));
+            }
+          b0              = broadcast(1 + s.sin_psi);
+          b2              = broadcast(-(1 - s.sin_psi));
+          b_bits          = Lanes::differing_bits(b0, b2);
+          main_equivalent = broadcast(d[DerivedIndex::main_equivalent]);
+          q               = broadcast(d[DerivedIndex::main_equivalent] *
+                        d[DerivedIndex::main_equivalent]);
+          cross           = broadcast(d[edge_equivalent]);
+          cross_bits =
+            Lanes::differing_bits(cross, broadcast(d[edge_equivalent + 1]));
+          above = broadcast((1 - sp) * (1 - sp));
+          below_bits =
+            Lanes::differing_bits(above, broadcast((1 + sp) * (1 + sp)));
+          middle_bits = Lanes::differing_bits(above, broadcast(2. * 2.));
+          two_sp      = broadcast(2 * sp);
+        }
+
+        Lanes::Value one_plus_sp, one_minus_sp, a2, k, cutoff, cohesion,
+          main_inverse, Db[3], Db01, Db12, edge[8], edge_bits[8], b0, b2,
+          b_bits, main_equivalent, q, cross, cross_bits, above, below_bits,
+          middle_bits, two_sp;
+      };
+
+      /// The sorted principal stresses @p x of the plane-strain stress t
+      /// (in-plane Mohr circle centre -+ @p radius and t[3]) in Lanes, as
+      /// in return_plane_strain().
+      DEAL_II_ALWAYS_INLINE inline void
+      sorted_pair(const Lanes::Value t[4],
+                  const Lanes::Value radius,
+                  Lanes::Value       x[3])
+      {
+        const Lanes::Value centre = 0.5 * (t[0] + t[1]);
+        const Lanes::Value a = centre + radius, b = centre - radius, z = t[3];
+        x[0] = Lanes::max(a, z);
+        x[1] = Lanes::max(b, Lanes::min(a, z));
+        x[2] = Lanes::min(b, z);
+      }
+
+      /// acceptable() in Lanes.
+      DEAL_II_ALWAYS_INLINE inline Lanes::Mask
+      acceptable_pair(const Lanes::Value y[3], const LaneConstants &c)
+      {
+        using Lanes::Value;
+        const Value s1 = Lanes::max(Lanes::max(y[0], y[1]), y[2]);
+        const Value s3 = Lanes::min(Lanes::min(y[0], y[1]), y[2]);
+        const Value v =
+          Lanes::max(c.one_plus_sp * s1 - c.one_minus_sp * s3 - c.k,
+                     s1 - c.cutoff);
+        return v <= 1e-13 * (Lanes::abs(y[0]) + Lanes::abs(y[1]) +
+                             Lanes::abs(y[2]) + c.cohesion);
+      }
+
+      /// return_to_main_plane() of @p x in Lanes, unrefined (a0 x0 + a2
+      /// x2 with a2 = -(1 - sin phi)): the lanes where its multiplier is
+      /// positive and its result accepted, with @p y, the plastic strain
+      /// @p e and its equivalent @p d_kappa as return_plane_strain() has
+      /// them.
+      DEAL_II_ALWAYS_INLINE inline Lanes::Mask
+      main_plane_pair(const LaneConstants &c,
+                      const Lanes::Value   x[3],
+                      Lanes::Value         y[3],
+                      Lanes::Value         e[3],
+                      Lanes::Value        &d_kappa)
+      {
+        const Lanes::Value dm =
+          (c.one_plus_sp * x[0] + c.a2 * x[2] - c.k) * c.main_inverse;
+        for (unsigned int i = 0; i < 3; ++i)
+          y[i] = x[i] - dm * c.Db[i];
+        e[0]    = dm * c.b0;
+        e[1]    = Lanes::broadcast(0);
+        e[2]    = dm * c.b2;
+        d_kappa = dm * c.main_equivalent;
+        return (dm > 0) & acceptable_pair(y, c);
+      }
+
+      /// return_to_edge() of @p x in Lanes onto edge 2 where @p two, else
+      /// edge 1 (constants picked lane by lane), unrefined: the lanes where
+      /// both multipliers are non-negative and the result accepted, with
+      /// @p y, @p e and @p d_kappa as return_plane_strain() has them.
+      DEAL_II_ALWAYS_INLINE inline Lanes::Mask
+      edge_pair(const LaneConstants &c,
+                const Lanes::Value   x[3],
+                const Lanes::Mask    two,
+                Lanes::Value         y[3],
+                Lanes::Value         e[3],
+                Lanes::Value        &d_kappa)
+      {
+        using Lanes::select;
+        using Lanes::Value;
+        Value E[8];
+        for (unsigned int i = 0; i < 8; ++i)
+          E[i] = Lanes::pick(two, c.edge[i], c.edge_bits[i]);
+        const Value a0x0 = c.one_plus_sp * x[0], a2x2 = c.a2 * x[2];
+        const Value r0 = a0x0 + a2x2 - c.k;
+        const Value r1 = select(two,
+                                a0x0 + c.a2 * x[1] - c.k,
+                                c.one_plus_sp * x[1] + a2x2 - c.k);
+        const Value d0 = (r0 * E[6] - E[4] * r1) * E[7];
+        const Value d1 = (E[3] * r1 - E[5] * r0) * E[7];
+        for (unsigned int i = 0; i < 3; ++i)
+          y[i] = x[i] - d0 * c.Db[i] - d1 * E[i];
+        const Value zero  = Lanes::broadcast(0);
+        e[0]              = d0 * c.b0 + select(two, d1 * c.b0, zero);
+        e[1]              = d1 * Lanes::pick(two, c.b0, c.b_bits);
+        e[2]              = d0 * c.b2 + select(two, zero, d1 * c.b2);
+        const Value cross = Lanes::pick(two, c.cross, c.cross_bits);
+        d_kappa = Lanes::sqrt(c.q * (d0 * d0 + d1 * d1) + 2. * cross * d0 * d1);
+        return (E[7] != 0) & (d0 >= 0) & (d1 >= 0) & acceptable_pair(y, c);
+      }
+
+      /**
+       * return_sorted() of the sorted principal stresses @p x of two
+       * particles in Lanes on its common paths only: the main plane where
+       * it comes first and its unrefined result is accepted, or the edge
+       * that comes first where that one's is. Returns the lanes where one
+       * of these is the answer (the others leave return_sorted() another
+       * way), with the returned @p y, the plastic strain @p e (sorted
+       * frame) and its equivalent @p d_kappa as return_plane_strain()
+       * computes them.
+       */
+      DEAL_II_ALWAYS_INLINE inline Lanes::Mask
+      return_common_pair(const LaneConstants &c,
+                         const Lanes::Value   x[3],
+                         Lanes::Value         y[3],
+                         Lanes::Value         e[3],
+                         Lanes::Value        &d_kappa)
+      {
+        using Lanes::Mask;
+        using Lanes::select;
+        using Lanes::Value;
+        const Value f = c.one_plus_sp * x[0] - c.one_minus_sp * x[2] - c.k;
+        const Mask  plastic    = ~((f <= 0) & (x[0] <= c.cutoff));
+        const Value dl         = f * c.main_inverse;
+        const Value g01        = (x[0] - x[1]) - dl * c.Db01;
+        const Value g12        = (x[1] - x[2]) - dl * c.Db12;
+        const Value tolerance  = 1e-12 * (Lanes::abs(x[0]) + Lanes::abs(x[1]) +
+                                         Lanes::abs(x[2]) + c.cohesion);
+        const Mask  main_first = Lanes::min(g01, g12) >= -tolerance;
+        const Mask  two        = g12 < 0;
+        // Each path only if a lane may take it.
+        Mask main_ok = {}, edge_ok = {};
+        if (Lanes::any(main_first & plastic))
+          main_ok = main_first & main_plane_pair(c, x, y, e, d_kappa);
+        if (Lanes::any(~main_first & plastic))
+          {
+            Value ye[3], ee[3], ke;
+            edge_ok = ~main_first & edge_pair(c, x, two, ye, ee, ke);
+            const bool some_main = Lanes::any(main_ok);
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                y[i] = some_main ? select(main_ok, y[i], ye[i]) : ye[i];
+                e[i] = some_main ? select(main_ok, e[i], ee[i]) : ee[i];
+              }
+            d_kappa = some_main ? select(main_ok, d_kappa, ke) : ke;
+          }
+        return plastic & (main_ok | edge_ok);
+      }
+
+      /// return_plane_strain() of two particles' stresses @p t in Lanes
+      /// on return_common_pair()'s paths: the lanes where it is the
+      /// answer, with @p t, @p ep and @p d_kappa there.
+      DEAL_II_ALWAYS_INLINE inline Lanes::Mask
+      return_plane_strain_pair(const LaneConstants &constants,
+                               Lanes::Value         t[4],
+                               Lanes::Value         ep[4],
+                               Lanes::Value        &d_kappa)
+      {
+        using Lanes::Mask;
+        using Lanes::select;
+        using Lanes::Value;
+        const Value half   = 0.5 * (t[0] - t[1]);
+        const Value radius = Lanes::sqrt(half * half + t[2] * t[2]);
+        Value       x[3], y[3], e[3];
+        sorted_pair(t, radius, x);
+        const Mask done = return_common_pair(constants, x, y, e, d_kappa);
+        if (!Lanes::any(done))
+          return done;
+        // Back to (a, b, z), z's place by flags as in
+        // return_plane_strain().
+        const Value centre = 0.5 * (t[0] + t[1]);
+        const Value a = centre + radius, b = centre - radius, z = t[3];
+        const Mask  za = z <= a, zb = z <= b;
+        const Mask  first = ~za & ~zb, last = za & zb;
+        const Value ya    = select(first, y[1], y[0]);
+        const Value yb    = select(last, y[1], y[2]);
+        const Value yz    = select(first, y[0], select(last, y[2], y[1]));
+        const Value ea    = select(first, e[1], e[0]);
+        const Value eb    = select(last, e[1], e[2]);
+        const Value ez    = select(first, e[0], select(last, e[2], e[1]));
+        const Mask  round = radius > 0;
+        const Value inv   = select(round, 1 / radius, Lanes::broadcast(0));
+        const Value cos2  = select(round, half * inv, Lanes::broadcast(1));
+        const Value sin2  = t[2] * inv;
+        const Value p = 0.5 * (ya + yb), q = 0.5 * (ya - yb);
+        t[0]           = p + q * cos2;
+        t[1]           = p - q * cos2;
+        t[2]           = q * sin2;
+        t[3]           = yz;
+        const Value pa = 0.5 * (ea + eb), pb = 0.5 * (ea - eb);
+        ep[0] = pa + pb * cos2;
+        ep[1] = pa - pb * cos2;
+        ep[2] = pb * sin2;
+        ep[3] = ez;
+        return done;
+      }
+
+      /// MohrCoulombReturn::inside_plane() in Lanes: the case of z's
+      /// place picks alpha^2 and beta of the one test alpha^2 r^2 <=
+      /// beta^2, beta >= 0.
+      DEAL_II_ALWAYS_INLINE inline Lanes::Mask
+      inside_plane_lanes(const LaneConstants &k,
+                         const Lanes::Value   c,
+                         const Lanes::Value   r2,
+                         const Lanes::Value   z)
+      {
+        using Lanes::Mask;
+        using Lanes::select;
+        using Lanes::Value;
+        const Value dz     = z - c;
+        const Value dz2    = dz * dz;
+        const Mask  above  = (dz >= 0) & (dz2 >= r2);
+        const Mask  below  = ~above & (dz <= 0) & (dz2 >= r2);
+        const Mask  middle = ~above & ~below;
+        const Value alpha2 =
+          Lanes::pick(middle,
+                      Lanes::pick(below, k.above, k.below_bits),
+                      k.middle_bits);
+        const Value beta =
+          select(above,
+                 k.k + k.one_minus_sp * c - k.one_plus_sp * z,
+                 select(below,
+                        k.k + k.one_minus_sp * z - k.one_plus_sp * c,
+                        k.k - k.two_sp * c));
+        const Value cut = k.cutoff - c;
+        return (beta >= 0) & (alpha2 * r2 <= beta * beta) & (z <= k.cutoff) &
+               (cut >= 0) & (r2 <= cut * cut);
+      }
+
+
+
       template <int dim>
       struct MohrCoulombReturn
       {
@@ -611,6 +881,10 @@ namespace psmpm
         /// in_plane() maps a plane-strain stress in its own frame.
         static constexpr bool returns_in_plane = true;
 
+        /// in_plane_pair() and inside_plane_pair() for two particles, with
+        /// the constants lane_constants() makes once per batch.
+        static constexpr bool returns_pairs = true;
+
         bool
         in_plane(const typename PlasticHypoelastic<dim>::Strength &s,
                  std::array<double, 4>                            &t,
@@ -618,6 +892,30 @@ namespace psmpm
                  double &d_kappa) const
         {
           return return_plane_strain(s, t, ep, d_kappa);
+        }
+
+        static LaneConstants
+        lane_constants(const typename PlasticHypoelastic<dim>::Strength &s)
+        {
+          return LaneConstants(s);
+        }
+
+        Lanes::Mask
+        in_plane_pair(const LaneConstants &c,
+                      Lanes::Value         t[4],
+                      Lanes::Value         ep[4],
+                      Lanes::Value        &d_kappa) const
+        {
+          return return_plane_strain_pair(c, t, ep, d_kappa);
+        }
+
+        Lanes::Mask
+        inside_plane_pair(const LaneConstants &k,
+                          const Lanes::Value   c,
+                          const Lanes::Value   r2,
+                          const Lanes::Value   z) const
+        {
+          return inside_plane_lanes(k, c, r2, z);
         }
 
         void

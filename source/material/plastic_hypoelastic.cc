@@ -88,6 +88,16 @@ namespace psmpm
                         "strain at which cohesion and friction angle reach "
                         "their residual values, linearly from 0 (0: no "
                         "softening).");
+      prm.declare_entry("Disconnected volume ratio",
+                        "none",
+                        Patterns::Anything(),
+                        "mohr-coulomb, drucker-prager: a granular material "
+                        "whose volume ratio J = V/V0 exceeds this (> 1) is "
+                        "taken as grains out of contact: the particle "
+                        "carries no stress until compacted below it again "
+                        "(the disconnected state of Dunatunga and Kamrin, "
+                        "J. Fluid Mech. 779, 2015). 'none': never "
+                        "(doc/geomechanics.md, granular column collapse).");
     }
 
 
@@ -112,6 +122,15 @@ namespace psmpm
                        p + "/Residual friction angle",
                        friction_angle);
       softening_strain = prm.get_double("Softening strain");
+      disconnected_volume_ratio =
+        parse_optional(prm.get("Disconnected volume ratio"),
+                       p + "/Disconnected volume ratio",
+                       HUGE_VAL);
+      AssertThrow(disconnected_volume_ratio > 1,
+                  ExcMessage(p + "/Disconnected volume ratio = " +
+                             prm_value(disconnected_volume_ratio) +
+                             ": must be a number > 1 (a volume ratio above "
+                             "the initial one) or 'none'."));
 
       const auto check_angle = [&](const double v, const std::string &e) {
         AssertThrow(std::isfinite(v) && v >= 0 && v < 90,

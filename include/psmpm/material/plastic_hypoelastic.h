@@ -4,6 +4,7 @@
 #ifndef psmpm_material_plastic_hypoelastic_h
 #define psmpm_material_plastic_hypoelastic_h
 
+#include <psmpm/material/lanes.h>
 #include <psmpm/material/material.h>
 
 #include <array>
@@ -143,6 +144,9 @@ namespace psmpm
       double residual_cohesion;
       double residual_friction_angle;
       double softening_strain = 0; ///< 0: no softening
+      /// Above this volume ratio J = V/V0 the particle carries no stress
+      /// (+infinity: never).
+      double disconnected_volume_ratio = HUGE_VAL;
 
     protected:
       /**
@@ -157,6 +161,10 @@ namespace psmpm
        * plastic strain increment ep = C^-1 (trial - t) (tensor shear) and
        * its equivalent d_kappa in closed form (tests/material/
        * plastic_in_plane_01 checks both against the principal return).
+       * A Return with returns_pairs = true also has lane_constants(),
+       * inside_plane_pair() and in_plane_pair(): in plane strain without
+       * softening the particles are then updated two at a time
+       * (update_plane_strain_pair()), bit for bit as one at a time.
        */
       template <typename Return>
       void
@@ -178,6 +186,8 @@ namespace psmpm
         double inv_e;
         double nu;
         double inv_rho0;
+        /// Disconnected volume ratio (+infinity: none).
+        double disconnected_ratio;
       };
 
       /// After the return of the principal stresses @p trial to @p sigma:
@@ -256,6 +266,40 @@ namespace psmpm
                           const double                 radius,
                           double                      *block,
                           std::array<double, 4>       &t) const;
+
+      /**
+       * update_plane_strain() of two particles at once (a Return with
+       * returns_pairs, plane strain without softening): the trial
+       * stresses, the elastic test and the return's common path (the
+       * Return's in_plane_pair(), which says in which lanes its result is
+       * the answer) for both particles in Lanes; a yielding particle whose
+       * return leaves that path takes the one-particle in_plane(). Bit
+       * for bit update_plane_strain() of each particle. @p lanes: the
+       * Return's lane_constants() of @p s (once per batch); @p dL and
+       * @p stress point to the first particle's, @p block0 and @p block1
+       * are the two state blocks.
+       */
+      template <typename Return, typename LaneConstants>
+      void
+      update_plane_strain_pair(const Return          &ret,
+                               const Strength        &s,
+                               const LaneConstants   &lanes,
+                               const BatchConstants  &c,
+                               const Tensor<2, 2>    *dL,
+                               SymmetricTensor<2, 2> *stress,
+                               double                *block0,
+                               double                *block1,
+                               double                *volume_ratio) const;
+
+      /// plane_strain_trial() of the two particles' @p dL and @p st (the
+      /// out-of-plane stresses @p szz) in Lanes.
+      static void
+      plane_strain_trial_pair(const BatchConstants        &c,
+                              const Tensor<2, 2>          *dL,
+                              const SymmetricTensor<2, 2> *st,
+                              const Lanes::Value           szz,
+                              Lanes::Value                &tr,
+                              Lanes::Value                 t[4]);
 
       /// After a return that mapped the plane-strain trial stress in its
       /// own x-y frame (a Return with returns_in_plane, see

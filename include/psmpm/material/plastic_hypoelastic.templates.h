@@ -111,7 +111,14 @@ namespace psmpm
                                       block[out_of_plane] + c.lambda * de}};
       double               &J     = block[ratio_column];
       J *= 1 + de;
-      volume_ratio                      = 1 + de;
+      volume_ratio = 1 + de;
+      // Disconnected grains: as in update_plane_strain().
+      if (J > c.disconnected_ratio)
+        {
+          stress_xx           = 0;
+          block[out_of_plane] = 0;
+          return;
+        }
       const std::array<double, 3> trial = sigma;
       if (!ret.inside(s, sigma) && ret(s, sigma))
         {
@@ -235,6 +242,18 @@ namespace psmpm
       plane_strain_trial(c, dL, st, block[out_of_plane], tr, t);
       block[ratio_column] *= 1 + tr;
       volume_ratio = 1 + tr;
+      // Grains out of contact (J above the disconnected ratio) carry no
+      // stress and neither yield nor dissipate until compacted again;
+      // without this, a dilated particle that is compressed again takes
+      // the dense material's stress, and its force J V0 sigma grad(phi)
+      // acts on a stiffness J times the dense one (a local Courant
+      // number sqrt(J) times the step's).
+      if (block[ratio_column] > c.disconnected_ratio)
+        {
+          st                  = SymmetricTensor<2, 2>();
+          block[out_of_plane] = 0;
+          return;
+        }
 
       const double centre  = 0.5 * (t[0] + t[1]);
       const double half    = 0.5 * (t[0] - t[1]);
@@ -278,6 +297,122 @@ namespace psmpm
 
 
     template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::plane_strain_trial_pair(
+      const BatchConstants        &c,
+      const Tensor<2, 2>          *dL,
+      const SymmetricTensor<2, 2> *st,
+      const Lanes::Value           szz,
+      Lanes::Value                &tr,
+      Lanes::Value                 t[4])
+    {
+      using namespace Lanes;
+      // plane_strain_trial(), operation by operation.
+      const Value de00 = pair(dL[0][0][0], dL[1][0][0]);
+      const Value de11 = pair(dL[0][1][1], dL[1][1][1]);
+      const Value l01  = pair(dL[0][0][1], dL[1][0][1]);
+      const Value l10  = pair(dL[0][1][0], dL[1][1][0]);
+      const Value de01 = (l01 + l10) * 0.5;
+      tr               = de00 + de11;
+      const Value w    = 0.5 * (l01 - l10);
+      const Value u    = 0.25 * w * w;
+      const Value q    = select(u < 1e-6, 1 - u + u * u, 1 / (1 + u));
+      const Value cr   = (1 - u) * q;
+      const Value sn   = w * q;
+      const Value sxx  = pair(st[0][0][0], st[1][0][0]);
+      const Value syy  = pair(st[0][1][1], st[1][1][1]);
+      const Value sxy  = pair(st[0][0][1], st[1][0][1]);
+      const Value cc = cr * cr, ss = sn * sn, cs = cr * sn;
+      t[0] =
+        cc * sxx + 2. * cs * sxy + ss * syy + c.lambda * tr + c.two_g * de00;
+      t[1] =
+        ss * sxx - 2. * cs * sxy + cc * syy + c.lambda * tr + c.two_g * de11;
+      t[2] = -cs * sxx + (cc - ss) * sxy + cs * syy + c.two_g * de01;
+      t[3] = szz + c.lambda * tr;
+    }
+
+
+
+    template <int dim>
+    template <typename Return, typename LaneConstants>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::update_plane_strain_pair(
+      const Return          &ret,
+      const Strength        &s,
+      const LaneConstants   &lanes,
+      const BatchConstants  &c,
+      const Tensor<2, 2>    *dL,
+      SymmetricTensor<2, 2> *stress,
+      double                *block0,
+      double                *block1,
+      double                *volume_ratio) const
+    {
+      using namespace Lanes;
+      double *const block[2] = {block0, block1};
+      Value         tr, t[4];
+      plane_strain_trial_pair(c,
+                              dL,
+                              stress,
+                              pair(block0[out_of_plane], block1[out_of_plane]),
+                              tr,
+                              t);
+      for (unsigned int l = 0; l < 2; ++l)
+        {
+          block[l][ratio_column] *= 1 + tr[l];
+          volume_ratio[l] = 1 + tr[l];
+        }
+      const Value centre  = 0.5 * (t[0] + t[1]);
+      const Value half    = 0.5 * (t[0] - t[1]);
+      const Value radius2 = half * half + t[2] * t[2];
+      // Disconnected grains (update_plane_strain()): no return, no stress.
+      const Mask disconnected =
+        pair(block0[ratio_column], block1[ratio_column]) > c.disconnected_ratio;
+      const Mask outside =
+        ~ret.inside_plane_pair(lanes, centre, radius2, t[3]) & ~disconnected;
+      if (any(outside))
+        {
+          Value      r[4] = {t[0], t[1], t[2], t[3]}, ep[4], d_kappa;
+          const Mask done = outside & ret.in_plane_pair(lanes, r, ep, d_kappa);
+          for (unsigned int l = 0; l < 2; ++l)
+            {
+              std::array<double, 4> tl = {{t[0][l], t[1][l], t[2][l], t[3][l]}};
+              if (done[l])
+                {
+                  tl = {{r[0][l], r[1][l], r[2][l], r[3][l]}};
+                  add_plastic_increment(
+                    c,
+                    tl,
+                    {{ep[0][l], ep[1][l], ep[2][l], ep[3][l]}},
+                    d_kappa[l],
+                    block[l]);
+                }
+              else if (outside[l])
+                {
+                  // Off the common path: the one-particle return.
+                  std::array<double, 4> epl;
+                  double                dkl;
+                  if (ret.in_plane(s, tl, epl, dkl))
+                    add_plastic_increment(c, tl, epl, dkl, block[l]);
+                }
+              for (unsigned int k = 0; k < 4; ++k)
+                t[k][l] = tl[k];
+            }
+        }
+      for (unsigned int l = 0; l < 2; ++l)
+        {
+          if (disconnected[l])
+            for (unsigned int k = 0; k < 4; ++k)
+              t[k][l] = 0;
+          stress[l][0][0]        = t[0][l];
+          stress[l][1][1]        = t[1][l];
+          stress[l][0][1]        = t[2][l];
+          block[l][out_of_plane] = t[3][l];
+        }
+    }
+
+
+
+    template <int dim>
     template <typename Return>
     void
     PlasticHypoelastic<dim>::update_with(const Return            &ret,
@@ -292,14 +427,34 @@ namespace psmpm
                                      this->density,
                                      1 / this->youngs_modulus,
                                      this->poisson_ratio,
-                                     1 / this->density};
+                                     1 / this->density,
+                                     disconnected_volume_ratio};
       const unsigned int   stride = this->state_stride();
       Strength             base   = strength(0);
       ret.prepare(base);
       // Outside the loop: Strength is 33 values, not to be initialised
       // for every particle.
-      Strength softened;
-      for (unsigned int i = 0; i < n; ++i)
+      Strength     softened;
+      unsigned int i = 0;
+      // In plane strain without softening two particles at a time.
+      if constexpr (dim == 2 && Return::returns_pairs)
+        if (!softens())
+          for (const auto lanes = Return::lane_constants(base); i + 1 < n;
+               i += 2)
+            {
+              this->request_ahead(n, stress, state, stride, i);
+              this->request_ahead(n, stress, state, stride, i + 1);
+              update_plane_strain_pair(ret,
+                                       base,
+                                       lanes,
+                                       c,
+                                       dL + i,
+                                       stress + i,
+                                       state + stride * i,
+                                       state + stride * (i + 1),
+                                       volume_ratio + i);
+            }
+      for (; i < n; ++i)
         {
           this->request_ahead(n, stress, state, stride, i);
           double *const   block = state + stride * i;
