@@ -105,6 +105,9 @@ namespace psmpm
       statistics.normal_work -= 0.5 * m * w_n * w_n;
       statistics.friction_work -=
         0.5 * m * (1 - (1 - s) * (1 - s)) * w_t_norm * w_t_norm;
+      // Coulomb's dissipation: the friction impulse m s |w_t| times the
+      // slip velocity left, (1 - s) |w_t| (zero where the pair sticks).
+      statistics.slip_work -= m * s * (1 - s) * w_t_norm * w_t_norm;
       ++statistics.n_contact_nodes;
       return true;
     }
@@ -341,12 +344,21 @@ namespace psmpm
                   !close_enough(fields, i, a, b, normal))
                 continue;
               const unsigned int pair = pair_index(a, b, n);
+              const double       mu = with_friction ? pair_friction[pair] : 0.;
+              if (!fields.stuck.empty() && mu > 0)
+                {
+                  const Tensor<1, dim> w =
+                    fields.velocity[ia] - fields.velocity[ib];
+                  const double w_n = w * normal;
+                  if ((w - w_n * normal).norm() <= mu * w_n)
+                    fields.stuck[ia] = fields.stuck[ib] = 1;
+                }
               correct_pair(fields.mass[ia],
                            fields.mass[ib],
                            fields.velocity[ia],
                            fields.velocity[ib],
                            normal,
-                           with_friction ? pair_friction[pair] : 0.,
+                           mu,
                            statistics[pair]);
             }
         }

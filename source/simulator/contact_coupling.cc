@@ -13,9 +13,10 @@ namespace psmpm
     namespace
     {
       /// Values per (DoF, body) of the first per-body pass: mass, volume,
-      /// momentum, force and mass gradient.
+      /// momentum, force, mass gradient and first moment of the mass
+      /// (sum m_p N_i x_p, the distance criterion's mass centre).
       template <int dim>
-      constexpr unsigned int width = 2 + 3 * dim;
+      constexpr unsigned int width = 2 + 4 * dim;
 
       /// The integral of each of the cell's functions over cell @p c with
       /// the vertices @p v: the centroids of a uniform subdivision into
@@ -84,21 +85,22 @@ namespace psmpm
       friction_force.assign(n_pairs, 0.);
       friction_work.assign(n_pairs, 0.);
       normal_work.assign(n_pairs, 0.);
+      slip_work.assign(n_pairs, 0.);
     }
 
     template <int dim>
     void
     ContactCoupling<dim>::choose_automatic(ParameterHandler &prm,
-                                           std::string      &mass_type) const
+                                           std::string      &mass_type)
     {
-      if (!contact.enabled())
+      (void)prm;
+      automatic_note.clear();
+      if (!contact.enabled() || mass_type != "automatic")
         return;
-      if (mass_type == "automatic")
-        mass_type = "lumped";
-      prm.enter_subsection("Transfer");
-      if (prm.get("Scheme") == "automatic")
-        prm.set("Scheme", "musl");
-      prm.leave_subsection();
+      mass_type      = "lumped";
+      automatic_note = "Mass matrix/Type = automatic is lumped with "
+                       "Contact/Type = multi-velocity (a mass matrix with "
+                       "couplings mixes the bodies next to the contact DoFs)";
     }
 
     template <int dim>
@@ -118,10 +120,10 @@ namespace psmpm
                              mass_type + " (lumped is)."));
       // USL with contact lost the sliding block (energy growth) and the
       // disks (a non-positive volume; without contact too): not offered.
-      AssertThrow(scheme == "musl",
+      AssertThrow(scheme == "musl" || scheme == "apic",
                   ExcMessage("Contact/Type = multi-velocity: not available "
                              "with Transfer/Scheme = " +
-                             scheme + " (musl is)."));
+                             scheme + " (musl and apic are)."));
       AssertThrow(reconstruction == "particles",
                   ExcMessage("Contact/Type = multi-velocity: not available "
                              "with Transfer/Reconstruction = " +
@@ -289,18 +291,26 @@ namespace psmpm
           const Tensor<1, dim> *grad = state.gradients(p, cell);
           for (unsigned int k = 0; k < n; ++k)
             {
-              const unsigned int i = dof_index[dofs[cell * n + k]];
+              const unsigned int l = dofs[cell * n + k];
+              const unsigned int i = dof_index[l];
               if (i == numbers::invalid_unsigned_int)
                 continue;
               double              *d = &sums[(i * n_bodies + b) * w];
               const Tensor<1, dim> f = phi[k] * mg - V * (s * grad[k]);
+              // apic: the momentum of the particle's affine field.
+              const Tensor<1, dim> q =
+                affine_points == nullptr ?
+                  mv :
+                  mv + m * (particles.affine[p] *
+                            (affine_points[l] - particles.position[p]));
               d[0] += m * phi[k];
               d[1] += V * phi[k];
               for (unsigned int e = 0; e < dim; ++e)
                 {
-                  d[2 + e] += phi[k] * mv[e];
+                  d[2 + e] += phi[k] * q[e];
                   d[2 + dim + e] += f[e];
                   d[2 + 2 * dim + e] += m * grad[k][e];
+                  d[2 + 3 * dim + e] += m * phi[k] * particles.position[p][e];
                 }
             }
         }
@@ -315,7 +325,7 @@ namespace psmpm
       if (n_ranks == 1)
         return;
       // Every rank keeps the totals (statistics, checkpoints).
-      constexpr unsigned int w = dim + 4;
+      constexpr unsigned int w = dim + 5;
       std::vector<double>    values(step_statistics.size() * w);
       for (unsigned int q = 0; q < step_statistics.size(); ++q)
         {
@@ -325,6 +335,7 @@ namespace psmpm
           values[q * w + dim + 1] = step_statistics[q].normal_work;
           values[q * w + dim + 2] = step_statistics[q].normal_impulse;
           values[q * w + dim + 3] = step_statistics[q].tangential_impulse;
+          values[q * w + dim + 4] = step_statistics[q].slip_work;
         }
       Utilities::MPI::sum(values, comm, values);
       for (unsigned int q = 0; q < step_statistics.size(); ++q)
@@ -335,6 +346,7 @@ namespace psmpm
           step_statistics[q].normal_work        = values[q * w + dim + 1];
           step_statistics[q].normal_impulse     = values[q * w + dim + 2];
           step_statistics[q].tangential_impulse = values[q * w + dim + 3];
+          step_statistics[q].slip_work          = values[q * w + dim + 4];
         }
     }
 
@@ -379,6 +391,14 @@ namespace psmpm
     void
     ContactCoupling<dim>::correct_momentum(State<dim> &state)
     {
+      affine_points = nullptr;
+      correct(state);
+    }
+
+    template <int dim>
+    void
+    ContactCoupling<dim>::correct(State<dim> &state)
+    {
       constexpr unsigned int w = width<dim>;
       for (auto &f : pair_force)
         f = Tensor<1, dim>();
@@ -392,8 +412,14 @@ namespace psmpm
       const unsigned int n_contact = contact_dofs.size();
       const bool         volumes =
         contact.criterion == Contact<dim>::SeparationCriterion::volume_fraction;
-      fields.reinit(n_contact, n_bodies, volumes, false);
+      const bool centroids =
+        contact.criterion == Contact<dim>::SeparationCriterion::distance;
+      fields.reinit(n_contact, n_bodies, volumes, centroids);
       velocity_increment.assign(n_contact * n_bodies, Tensor<1, dim>());
+      projected_velocity.assign(n_contact * n_bodies, Tensor<1, dim>());
+      old_velocity.resize(near_particles.size());
+      for (std::size_t j = 0; j < near_particles.size(); ++j)
+        old_velocity[j] = state.particles.velocity[near_particles[j]];
       const double dt = state.dt;
       for (unsigned int i = 0; i < n_contact; ++i)
         {
@@ -425,18 +451,29 @@ namespace psmpm
                   v[e]                        = d[2 + e] / d[0];
                   f[e]                        = d[2 + dim + e];
                   fields.mass_gradient[ib][e] = d[2 + 2 * dim + e];
+                  if (centroids)
+                    fields.centroid[ib][e] = d[2 + 3 * dim + e] / d[0];
                 }
               // v_bi - v_bi* + dt a_i now, v_bi' - v_bi - dt a_i once the
               // corrected velocity is added below.
               fields.velocity[ib]    = v + dt * (a + f / d[0] - F / M);
               velocity_increment[ib] = -v - dt * a;
+              projected_velocity[ib] = v;
             }
         }
       vertex_gradients();
+      correction_direction = fields.velocity;
+      fields.stuck.assign(n_contact * n_bodies, 0);
       apply_correction();
       for (unsigned int ib = 0; ib < n_contact * n_bodies; ++ib)
-        if (fields.mass[ib] > 0)
-          velocity_increment[ib] += fields.velocity[ib];
+        {
+          Tensor<1, dim> &d = correction_direction[ib];
+          d                 = fields.velocity[ib] - d;
+          const double norm = d.norm();
+          d = norm > 0 && fields.stuck[ib] ? d / norm : Tensor<1, dim>();
+          if (fields.mass[ib] > 0)
+            velocity_increment[ib] += fields.velocity[ib];
+        }
       clear_fixed(state, velocity_increment);
       const unsigned int n_pairs = pair_force.size();
       for (unsigned int q = 0; q < n_pairs; ++q)
@@ -446,6 +483,7 @@ namespace psmpm
           friction_force[q] = step_statistics[q].tangential_impulse / dt;
           friction_work[q] += step_statistics[q].friction_work;
           normal_work[q] += step_statistics[q].normal_work;
+          slip_work[q] += step_statistics[q].slip_work;
         }
     }
 
@@ -460,8 +498,9 @@ namespace psmpm
       const unsigned int  n         = state.grid->dofs_per_cell;
       const unsigned int *dofs      = state.grid->cell_dofs().data();
       Tensor<1, dim>     *rhs       = state.grid->cell_arrays().rhs.data();
-      for (const std::size_t p : near_particles)
+      for (std::size_t j = 0; j < near_particles.size(); ++j)
         {
+          const std::size_t  p    = near_particles[j];
           const unsigned int cell = particles.cell[p];
           const unsigned int b    = particles.body_id[p] - 1;
           const double      *phi  = &state.shape_values[p * n];
@@ -469,8 +508,20 @@ namespace psmpm
           for (unsigned int k = 0; k < n; ++k)
             {
               const unsigned int i = dof_index[dofs[cell * n + k]];
-              if (i != numbers::invalid_unsigned_int)
-                dv += phi[k] * velocity_increment[i * n_bodies + b];
+              if (i == numbers::invalid_unsigned_int)
+                continue;
+              const unsigned int ib = i * n_bodies + b;
+              // FLIP, and where the body sticks to another, PIC along
+              // the correction's direction: the particle's deviation from
+              // its body's nodal velocity in that direction is dropped (the
+              // particle-grid round trip would bring it back at the next
+              // projection as a relative velocity of the stuck bodies, and
+              // the stuck node slip). The deviations sum to zero over the
+              // node's particles, so momentum is kept.
+              const Tensor<1, dim> &d = correction_direction[ib];
+              dv +=
+                phi[k] * (velocity_increment[ib] +
+                          (d * (projected_velocity[ib] - old_velocity[j])) * d);
             }
           particles.velocity[p] += dv;
           if (momentum_to_grid)
@@ -495,14 +546,22 @@ namespace psmpm
         {
           const unsigned int   cell = particles.cell[p];
           const unsigned int   b    = particles.body_id[p] - 1;
-          const Tensor<1, dim> mv   = particles.mass[p] * particles.velocity[p];
+          const double         m    = particles.mass[p];
+          const Tensor<1, dim> mv   = m * particles.velocity[p];
           const double        *phi  = &state.shape_values[p * n];
           for (unsigned int k = 0; k < n; ++k)
             {
-              const unsigned int i = dof_index[dofs[cell * n + k]];
-              if (i != numbers::invalid_unsigned_int)
-                for (unsigned int e = 0; e < dim; ++e)
-                  sums[(i * n_bodies + b) * dim + e] += phi[k] * mv[e];
+              const unsigned int l = dofs[cell * n + k];
+              const unsigned int i = dof_index[l];
+              if (i == numbers::invalid_unsigned_int)
+                continue;
+              const Tensor<1, dim> q =
+                affine_points == nullptr ?
+                  mv :
+                  mv + m * (particles.affine[p] *
+                            (affine_points[l] - particles.position[p]));
+              for (unsigned int e = 0; e < dim; ++e)
+                sums[(i * n_bodies + b) * dim + e] += phi[k] * q[e];
             }
         }
       sum_over_ranks(state, sums, dim);
@@ -600,6 +659,7 @@ namespace psmpm
             names.push_back("friction_force_" + pair);
             names.push_back("friction_work_" + pair);
             names.push_back("normal_work_" + pair);
+            names.push_back("slip_work_" + pair);
           }
       return names;
     }
@@ -618,9 +678,20 @@ namespace psmpm
           values.push_back(friction_force[q]);
           values.push_back(friction_work[q]);
           values.push_back(normal_work[q]);
+          values.push_back(slip_work[q]);
         }
       for (unsigned int c = 0; c < names.size(); ++c)
         table.add_value(names[c], values[c]);
+    }
+
+    template <int dim>
+    double
+    ContactCoupling<dim>::sliding_work() const
+    {
+      double sum = 0;
+      for (const double w : slip_work)
+        sum += w;
+      return sum;
     }
 
     template <int dim>
@@ -631,6 +702,7 @@ namespace psmpm
         return;
       archive.put("contact/friction_work", friction_work);
       archive.put("contact/normal_work", normal_work);
+      archive.put("contact/slip_work", slip_work);
     }
 
     template <int dim>
@@ -642,6 +714,7 @@ namespace psmpm
       friction_work =
         archive.get("contact/friction_work", friction_work.size());
       normal_work = archive.get("contact/normal_work", normal_work.size());
+      slip_work   = archive.get("contact/slip_work", slip_work.size());
     }
 
     template class ContactCoupling<1>;

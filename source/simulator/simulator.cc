@@ -559,7 +559,11 @@ namespace psmpm
             boundary_conditions.monitored_energy(total_energy, state.step);
         }
       if (state.contact)
-        contact.add_columns(statistics);
+        {
+          contact.add_columns(statistics);
+          // Friction of sliding contact dissipates: no loss to report.
+          total_energy -= contact.sliding_work();
+        }
       statistics.add_value("wall_time", record.wall_offset + wall_time);
       // A row with inf or nan (an error norm against a reference beyond
       // double range, a diverging quantity) is no result: the run stops.
@@ -675,6 +679,9 @@ namespace psmpm
 
       if (!time_step_control.warning().empty())
         pcout << "psmpm: warning: " << time_step_control.warning() << std::endl;
+      if (!contact.note().empty())
+        pcout << "psmpm: " << contact.note() << ", Transfer/Scheme = "
+              << transfers.name << std::endl;
       pcout << "psmpm: " << state.space->name() << " basis, "
             << discretisation.n_functions << " DoFs, "
             << Utilities::MPI::sum(state.particles.size(), comm)

@@ -5,9 +5,9 @@
 // message naming the parameter file, the entry and its value, and no
 // output: a pair naming a body the scene does not have, a negative
 // coefficient, contact without two bodies, and the transfers and mass
-// matrices contact does not support (Transfer/Scheme = apic and usl,
-// Mass matrix/Type = consistent, Transfer/Reconstruction = taylor least
-// squares). The two-disk contact scene itself passes --validate.
+// matrices contact does not support (Transfer/Scheme = usl, apic with
+// Transfer/FLIP fraction = 0.5, Mass matrix/Type = consistent,
+// Transfer/Reconstruction = taylor least squares). The two-disk contact scene itself passes --validate.
 #include "../app_tests.h"
 
 int
@@ -51,10 +51,12 @@ main(int argc, char **argv)
                   head + contact + "end\n",
                   {"Contact/Type = multi-velocity", "two bodies"});
   check_bad_input(out,
-                  "apic",
+                  "apic with FLIP",
                   head + bodies + contact +
-                    "end\nsubsection Transfer\n set Scheme = apic\nend\n",
-                  {"Contact/Type = multi-velocity", "Transfer/Scheme = apic"});
+                    "end\nsubsection Transfer\n set Scheme = apic\n"
+                    " set FLIP fraction = 0.5\nend\n",
+                  {"Contact/Type = multi-velocity",
+                   "Transfer/FLIP fraction = 0.5"});
   check_bad_input(out,
                   "usl",
                   head + bodies + contact +

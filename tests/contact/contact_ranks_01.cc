@@ -4,7 +4,9 @@
 // Multi-velocity contact gives the same run on one and on two MPI ranks
 // (the .output and .mpirun=2.output files are identical): the two-disk
 // contact scene (prm/contact_two_disks.prm) up to t = 1.4, through the
-// first 0.35 s of the impact, linear and Powell-Sabin. The per-body sums
+// first 0.35 s of the impact, linear (musl) and Powell-Sabin (apic,
+// its default with contact: the per-body momenta of the affine fields,
+// their increments to velocities and affine matrices). The per-body sums
 // of a contact DoF whose cells two ranks hold are added up over both
 // ranks before the correction, so both correct it alike; its force and
 // works are counted once, by the owner. Printed: the last row's energies,

@@ -10,11 +10,18 @@
 //     0.15 s) within 1 %; the friction force on it (the sum of the
 //     nodes' tangential impulses) is at most mu times the normal force,
 //     the mean contact force gives the block (20 kg/m) the fitted
-//     acceleration within 1 %, and the friction work is negative;
-// (b) mu = 0.7 (> tan 30): the block moves less than a tenth (linear)
-//     and a twentieth (Powell-Sabin) of the sliding block's distance (it
-//     creeps at a few mm/s; doc/contact.md);
-// (c) two elastic disks meeting head-on, frictionless: the momentum stays
+//     acceleration within 1 %, the friction work is negative, and the
+//     energy balance closes with the slipping nodes' Coulomb dissipation
+//     (slip_work_1_2): total energy - slip work stays within 1 % of the
+//     energy scale (kinetic + strain + |gravity|) of its initial value
+//     (linear);
+// (b) mu = 0.7 (> tan 30), musl: the block moves less than 6 % (linear)
+//     and 3 % (Powell-Sabin) of the sliding block's distance (it creeps
+//     at a few mm/s; doc/contact.md);
+// (c) two elastic disks meeting head-on, frictionless, with musl (apic,
+//     Powell-Sabin's default with contact, keeps the momentum but damps
+//     the elastic disks' energy like its PIC update does without contact,
+//     doc/contact.md "With the defaults"): the momentum stays
 //     zero to round-off, the total energy never exceeds the initial by
 //     2 % and ends within 2 % of it (during the impact it dips by about
 //     5 %, as without contact), and
@@ -136,6 +143,26 @@ main(int argc, char **argv)
       PSMPM_CHECK(out, max_ratio > 0.2 && max_ratio <= 0.3 * (1 + 1e-7));
       PSMPM_CHECK(out, std::abs(a_force / a - 1) < 0.01);
       PSMPM_CHECK(out, s["friction_work_1_2"].back() < 0);
+      double balance = 0, energy_scale = 0;
+      for (std::size_t i = 0; i < s["time"].size(); ++i)
+        {
+          balance = std::max(balance,
+                             std::abs(s["total_energy"][i] -
+                                      s["slip_work_1_2"][i] -
+                                      s["total_energy"][0]));
+          energy_scale = std::max(energy_scale,
+                                  s["kinetic_energy"][i] +
+                                    s["strain_energy"][i] +
+                                    std::abs(s["gravity_energy"][i]));
+        }
+      std::cout << basis << ": energy balance with the slip work off by "
+                << balance << " of scale " << energy_scale
+                << ", slip work " << s["slip_work_1_2"].back() << std::endl;
+      PSMPM_CHECK(out, s["slip_work_1_2"].back() < 0);
+      // Powell-Sabin's balance is off by 1.4 % of the scale over 0.15 s
+      // (0.45 % over 0.3 s; doc/contact.md): asserted for linear only.
+      if (linear)
+        PSMPM_CHECK(out, balance < 0.01 * energy_scale);
       const double slid = s["body1_x"].back() - s["body1_x"].front();
 
       // (b)
@@ -143,18 +170,19 @@ main(int argc, char **argv)
                     "contact_sliding_block.prm",
                     "stick",
                     {"Basis/Type=" + basis,
+                                      "Transfer/Scheme=musl",
                                       "Time/End time=0.15",
                                       "Contact/Friction coefficient=0.7"});
       const double crept = s["body1_x"].back() - s["body1_x"].front();
       std::cout << basis << ": slid " << slid << ", crept " << crept
                 << std::endl;
-      PSMPM_CHECK(out, std::abs(crept) < slid / (linear ? 10 : 20));
+      PSMPM_CHECK(out, std::abs(crept) < slid * (linear ? 0.06 : 0.03));
 
       // (c)
       s              = run_scene(out,
                     "contact_two_disks.prm",
                     "disks",
-                    {"Basis/Type=" + basis});
+                    {"Basis/Type=" + basis, "Transfer/Scheme=musl"});
       const auto  &E = s["total_energy"];
       const double scale =
         s["mass"].front() / 2 * 0.1 * std::sqrt(2.); // one disk's |p|

@@ -60,6 +60,10 @@ namespace psmpm
       /// Distance criterion: the body's mass centre at the node,
       /// sum_p m_p N_i(x_p) x_p / m_bi.
       std::vector<Point<dim>> centroid;
+      /// Optional output (sized by the caller, else left empty): 1 where
+      /// the body stuck to another body at the node in apply() with
+      /// friction (mu > 0 and the tangential relative velocity removed).
+      std::vector<char> stuck;
     };
 
     /**
@@ -79,6 +83,14 @@ namespace psmpm
       /// at most mu times normal_impulse, node by node.
       double       tangential_impulse = 0;
       double       friction_work      = 0;
+      /// Coulomb's dissipation (<= 0): at a node where the pair slips,
+      /// the friction impulse times the relative slip velocity after the
+      /// correction, -m s (1 - s) |w_t|^2; zero where it sticks. The
+      /// friction work also counts the kinetic energy of the relative
+      /// tangential velocity that the correction removes, most of it the
+      /// difference the projection left between the bodies' fields,
+      /// which the particles do not lose.
+      double       slip_work          = 0;
       double       normal_work        = 0;
       unsigned int n_contact_nodes    = 0;
     };

@@ -63,11 +63,20 @@ namespace psmpm
         return contact.enabled();
       }
 
-      /// With contact: Mass matrix/Type = automatic becomes lumped and
-      /// Transfer/Scheme = automatic musl (set in @p prm), the
-      /// combination contact is verified with, for every basis.
+      /// With contact: Mass matrix/Type = automatic becomes lumped (a mass
+      /// matrix with couplings mixes the bodies next to the contact DoFs),
+      /// and Transfer/Scheme = automatic then takes the space's transfer
+      /// for lumped mass (musl for P1, apic for Powell-Sabin); the note()
+      /// says so.
       void
-      choose_automatic(ParameterHandler &prm, std::string &mass_type) const;
+      choose_automatic(ParameterHandler &prm, std::string &mass_type);
+
+      /// What choose_automatic() changed, for the run's log (empty: none).
+      const std::string &
+      note() const
+      {
+        return automatic_note;
+      }
 
       /// Throws ExcMessage naming Contact/Type unless the transfer
       /// @p scheme (Transfer/Scheme), @p reconstruction and @p mass_type
@@ -93,6 +102,29 @@ namespace psmpm
       void
       correct_momentum(State<dim> &state);
 
+      /**
+       * The apic form of correct_momentum(), after the shared grid
+       * velocity v_i^{n+1} = v_i^n + dt a_i (state.grid_velocity): the
+       * per-body momenta are those of the particles' affine fields, and
+       * the increments are v_bi' - v_i^{n+1}, which
+       * add_affine_increments() gives the particles' new velocities and
+       * affine matrices. @p control_points: the space's control points in
+       * local relevant numbering (apic's X_i).
+       */
+      void
+      correct_affine_momentum(State<dim> &state, const Point<dim> *control_points);
+
+      /**
+       * After apic's grid-to-particle update (v_p = sum N_i v_i, C_p =
+       * B_p D_p^{-1}, lumped mass, the momentum of the new affine fields in
+       * the cell right-hand sides): the particles near contact DoFs get
+       * their own body's field, v_p += sum N_i dv_bi and, with @p fit,
+       * C_p += (sum N_i dv_bi (X_i - x_p)^T) D_p^{-1}, and the momentum of
+       * that change goes into the cell right-hand sides.
+       */
+      void
+      add_affine_increments(State<dim> &state, const bool fit);
+
       /// v_p += sum_i dv_bi N_i(x_p) for the particles near contact DoFs;
       /// with @p momentum_to_grid their momentum change goes into the
       /// cell right-hand sides too (MUSL's second projection).
@@ -116,14 +148,34 @@ namespace psmpm
            const std::size_t last,
            Tensor<2, dim>   *increments) const;
 
+      /// move() for apic: positions only if @p positions (apic moves with
+      /// v_p, which carries the body's field already), and the affine
+      /// matrices of apic's velocity-gradient (@p gradient) or rotation
+      /// (@p rotation) mode from the body's velocity gradient.
+      void
+      move_affine(State<dim>       &state,
+                  const std::size_t first,
+                  const std::size_t last,
+                  Tensor<2, dim>   *increments,
+                  const bool        positions,
+                  const bool        gradient,
+                  const bool        rotation) const;
+
       /// Per pair a-b: contact_force_a_b_x (, _y), the force on body a
       /// over the last step; normal_force_a_b and friction_force_a_b, the
       /// sums over the nodes of the normal and tangential impulses'
       /// magnitudes over dt (friction <= mu normal, node by node); and
       /// friction_work_a_b, normal_work_a_b, the kinetic energy removed
-      /// since the start (<= 0).
+      /// since the start (<= 0), and slip_work_a_b, the part of
+      /// friction_work_a_b at slipping nodes.
       std::vector<std::string>
       statistics_columns() const;
+
+      /// The friction work of slipping nodes since the start, summed over
+      /// the pairs (<= 0): energy dissipated by sliding, which the
+      /// stability monitor's balance counts.
+      double
+      sliding_work() const;
 
       /// The columns above, summed over the ranks (collective).
       void
@@ -167,6 +219,11 @@ namespace psmpm
       void
       vertex_gradients();
 
+      /// correct_momentum(), the per-body momenta of the particles'
+      /// velocities (affine_points nullptr) or of their affine fields.
+      void
+      correct(State<dim> &state);
+
       /// Zero the increments of components fixed at a wall.
       void
       clear_fixed(const State<dim>            &state,
@@ -195,6 +252,11 @@ namespace psmpm
       ContactFields<dim>  fields;
       /// dv_bi of correct_momentum(), then the moving velocity's.
       std::vector<Tensor<1, dim>> velocity_increment, moving_increment;
+      /// Per (DoF, body): p_bi / m_bi of the projection, and the unit
+      /// direction in which the correction changed v_bi (zero where it
+      /// did not); per near particle its velocity at the projection.
+      std::vector<Tensor<1, dim>> projected_velocity, correction_direction,
+        old_velocity;
       std::vector<ContactPairStatistics<dim>> step_statistics, scratch;
       /// Per pair (all ranks): force of the last step and the works
       /// accumulated since the start.
@@ -202,7 +264,11 @@ namespace psmpm
       /// Per pair, the step's sums over the nodes of the normal and the
       /// tangential impulse magnitudes over dt.
       std::vector<double> normal_force, friction_force;
-      std::vector<double> friction_work, normal_work;
+      std::vector<double> friction_work, normal_work, slip_work;
+      /// apic's control points (local relevant numbering) for the per-body
+      /// momenta of affine fields; nullptr: MUSL's m_p v_p.
+      const Point<dim> *affine_points = nullptr;
+      std::string       automatic_note;
       /// Whether any rank has contact DoFs in this step.
       bool         any_contact = false;
       MPI_Comm     comm        = MPI_COMM_SELF;

@@ -69,7 +69,8 @@ namespace psmpm
 
       /**
        * The energy and finiteness checks of a step, given the total
-       * energy, the energy scale (kinetic + strain + |gravity|) and the
+       * energy (the caller's balance: less the work of walls and the
+       * friction work of sliding contact, both dissipation), the energy scale (kinetic + strain + |gravity|) and the
        * momentum norm, plus the failures reported on any rank; the
        * initial energy is the one of the first call. Returns true if the
        * run must stop.

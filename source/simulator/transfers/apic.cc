@@ -6,6 +6,7 @@
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/apic_particle_loops.h>
 #include <psmpm/simulator/boundary_conditions.h>
+#include <psmpm/simulator/contact_coupling.h>
 #include <psmpm/simulator/transfer_scheme.h>
 #include <psmpm/simulator/transfer_scheme.templates.h>
 
@@ -162,6 +163,16 @@ namespace psmpm
                         "space); the affine matrix here is '" +
                         matrix_choice + "' with a space of degree " +
                         std::to_string(state.space->degree()) + "."));
+          // Contact's increments are those of the PIC update v_p = sum_i
+          // N_i v_i^{n+1}: no FLIP blend, no XPIC correction.
+          AssertThrow(!state.contact || (xpic_order == 1 && flip_fraction == 0),
+                      ExcMessage("Contact/Type = multi-velocity with "
+                                 "Transfer/Scheme = apic: not available with "
+                                 "Transfer/XPIC order = " +
+                                 std::to_string(xpic_order) +
+                                 " and Transfer/FLIP fraction = " +
+                                 prm_value(flip_fraction) +
+                                 " (1 and 0 are)."));
         }
 
         bool
@@ -191,14 +202,22 @@ namespace psmpm
           if (!this->solve(state, state.grid_acceleration, monitor, timer))
             return false;
           advance_grid_velocity(state);
+          if (state.contact)
+            state.contact->correct_affine_momentum(state,
+                                                   control_points.data());
           {
             PhaseTimer::Scope t(timer, "grid to particle");
             accelerate_particles(state);
           }
+          if (state.contact)
+            state.contact->add_affine_increments(
+              state, mode == AffineMatrix::control_points);
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           if (state.boundary_conditions)
             state.boundary_conditions->impose_velocity(state);
+          if (state.contact)
+            state.contact->correct_moving_velocity(state);
           // Move, material update, locate and the next step's sums, chunk
           // by chunk.
           Kernels kernels{*this};
@@ -228,6 +247,14 @@ namespace psmpm
                             first,
                             last,
                             increments);
+            if (state.contact)
+              state.contact->move_affine(state,
+                                         first,
+                                         last,
+                                         increments,
+                                         options.with_grid_velocity,
+                                         options.gradient,
+                                         options.rotation);
           }
 
           static bool
