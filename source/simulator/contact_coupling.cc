@@ -609,35 +609,9 @@ namespace psmpm
                                const std::size_t last,
                                Tensor<2, dim>   *increments) const
     {
-      if (moving_increment.empty())
-        return;
-      auto               &particles = state.particles;
-      const unsigned int  n         = state.grid->dofs_per_cell;
-      const unsigned int *dofs      = state.grid->cell_dofs().data();
-      const double        dt        = state.dt;
-      for (std::size_t p = first; p < last; ++p)
-        {
-          const unsigned int cell = particles.cell[p];
-          if (!contact_cell[cell])
-            continue;
-          const unsigned int    b    = particles.body_id[p] - 1;
-          const double         *phi  = &state.shape_values[p * n];
-          const Tensor<1, dim> *grad = state.gradients(p, cell);
-          Tensor<1, dim>        dv;
-          Tensor<2, dim>        dL;
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              const unsigned int i = dof_index[dofs[cell * n + k]];
-              if (i == numbers::invalid_unsigned_int)
-                continue;
-              const Tensor<1, dim> &u = moving_increment[i * n_bodies + b];
-              dv += phi[k] * u;
-              dL += outer_product(u, grad[k]);
-            }
-          particles.position[p] += dt * dv;
-          particles.displacement[p] += dt * dv;
-          increments[p - first] += dt * dL;
-        }
+      // move_affine() (contact_apic.cc) with positions and strain
+      // increments alone: the affine matrices are apic's.
+      move_affine(state, first, last, increments, true, false, false);
     }
 
     template <int dim>

@@ -17,8 +17,8 @@
 //     work < 0);
 // (c) the rolling disk stopped at 0.05 s and resumed repeats the run to
 //     0.1 s bit for bit (every statistics column but the wall time).
-#include "../app_tests.h"
-#include "../mpm_tests.h"
+#include "../checkpoint_tests.h"
+#include "../contact_tests.h"
 #include "../vtu_tests.h"
 
 #include <cmath>
@@ -26,39 +26,6 @@
 
 namespace
 {
-  /// The coefficient a of the least squares fit x = c + b t + a t^2 / 2
-  /// over the rows with t >= @p from.
-  double
-  fitted_acceleration(const std::vector<double> &t,
-                      const std::vector<double> &x,
-                      const double               from)
-  {
-    double s[5] = {0, 0, 0, 0, 0}, r[3] = {0, 0, 0};
-    for (std::size_t i = 0; i < t.size(); ++i)
-      if (t[i] >= from)
-        {
-          double p = 1;
-          for (unsigned int k = 0; k < 5; ++k, p *= t[i])
-            s[k] += p;
-          r[0] += x[i];
-          r[1] += x[i] * t[i];
-          r[2] += x[i] * t[i] * t[i];
-        }
-    const auto det = [](const double a[3][3]) {
-      return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-             a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-             a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    };
-    const double m[3][3] = {{s[0], s[1], s[2]},
-                            {s[1], s[2], s[3]},
-                            {s[2], s[3], s[4]}};
-    double       m2[3][3];
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        m2[i][j] = j == 2 ? r[i] : m[i][j];
-    return 2 * det(m2) / det(m);
-  }
-
   /// Body 1's speed along x and spin rate (its particles' angular
   /// momentum about their mass centre over their moment of inertia) in the
   /// last particle output of @p directory.
@@ -101,22 +68,6 @@ namespace
         }
     return {u[0], L / I};
   }
-
-  /// statistics.txt of @p directory without its wall_time column.
-  std::vector<std::string>
-  rows(const std::string &directory)
-  {
-    std::ifstream            in(directory + "/statistics.txt");
-    std::vector<std::string> r;
-    std::string              line;
-    while (std::getline(in, line))
-      if (!line.empty() && line[0] != '#')
-        {
-          line.erase(line.find_last_not_of(' ') + 1);
-          r.push_back(line.substr(0, line.find_last_of(' ')));
-        }
-    return r;
-  }
 } // namespace
 
 int
@@ -124,27 +75,12 @@ main(int argc, char **argv)
 {
   psmpm::MPISession mpi(argc, argv);
   std::ofstream     out("output");
-  std::string       screen, errors;
-  const auto        run = [&](const std::string              &scene,
-                       const std::string              &directory,
-                       const std::vector<std::string> &settings) {
-    std::vector<std::string> args = {std::string(PSMPM_SOURCE_DIR) + "/prm/" +
-                                       scene,
-                                     "--set",
-                                     "Output directory=" + directory,
-                                     "--set",
-                                     "Basis/Type=powell-sabin"};
-    // Entries, or a flag ("--resume").
-    for (const auto &s : settings)
-      {
-        if (s.rfind("--", 0) != 0)
-          args.push_back("--set");
-        args.push_back(s);
-      }
-    const int code = run_app(args, screen, errors);
-    if (code != 0)
-      out << errors << std::endl;
-    return code;
+  std::string       screen;
+  const auto        run = [&](const std::string       &scene,
+                       const std::string       &directory,
+                       std::vector<std::string> settings) {
+    settings.insert(settings.begin(), "Basis/Type=powell-sabin");
+    return run_prm_scene(out, scene, directory, settings, screen);
   };
   for (const auto &d : {"rolling", "disks", "split"})
     std::filesystem::remove_all(d);
@@ -210,7 +146,8 @@ main(int argc, char **argv)
               run("contact_rolling_disk.prm",
                   "split",
                   {"Time/End time=0.1", "Output/Interval=0", "--resume"}) == 0);
-  const auto whole = rows("rolling"), split = rows("split");
+  const auto whole = statistics_rows("rolling/statistics.txt"),
+             split = statistics_rows("split/statistics.txt");
   out << "rows " << whole.size() << std::endl;
   PSMPM_CHECK(out, whole.size() > 100 && whole == split);
 }

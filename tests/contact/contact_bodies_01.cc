@@ -15,37 +15,12 @@
 //     impulses (within 2 %), pair 1-3 never (every column zero), the
 //     outer disks come back (velocity reversed), the middle one stays
 //     at x = 0.5 within 1 mm, and the momentum stays zero to round-off.
-#include "../app_tests.h"
-#include "../mpm_tests.h"
+#include "../contact_tests.h"
 
 #include <cmath>
 
 namespace
 {
-  StatisticsTable
-  run_scene(std::ostream                   &out,
-            const std::string              &scene,
-            const std::string              &directory,
-            const std::vector<std::string> &settings)
-  {
-    std::vector<std::string> args = {std::string(PSMPM_SOURCE_DIR) + "/prm/" +
-                                       scene,
-                                     "--set",
-                                     "Output directory=" + directory};
-    for (const auto &s : settings)
-      {
-        args.push_back("--set");
-        args.push_back(s);
-      }
-    std::filesystem::remove_all(directory);
-    std::string screen, errors;
-    const int   code = run_app(args, screen, errors);
-    PSMPM_CHECK(out, code == 0);
-    if (code != 0)
-      out << errors << std::endl;
-    return StatisticsTable(directory);
-  }
-
   double
   largest_magnitude(const std::vector<double> &v)
   {

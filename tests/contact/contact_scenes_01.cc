@@ -27,78 +27,21 @@
 //     5 %, as without contact), and
 //     the disks separate: their centres end more than two cells beyond
 //     touching distance, the contact force is zero at the end.
-#include "../app_tests.h"
-#include "../mpm_tests.h"
+#include "../contact_tests.h"
 
 #include <cmath>
 #include <map>
 
 namespace
 {
-  /// statistics.txt of @p directory as columns by name.
+  /// The columns of @p table by name.
   std::map<std::string, std::vector<double>>
-  read_statistics(const std::string &directory)
+  by_name(const StatisticsTable &table)
   {
-    const StatisticsTable                      table(directory);
     std::map<std::string, std::vector<double>> columns;
     for (const auto &n : table.names)
       columns[n] = table.column(n);
     return columns;
-  }
-
-  /// The coefficient a of the least squares fit x = c + b t + a t^2 / 2.
-  double
-  fitted_acceleration(const std::vector<double> &t,
-                      const std::vector<double> &x)
-  {
-    // Normal equations of the fit in t (3 x 3, Cramer's rule).
-    double s[5] = {0, 0, 0, 0, 0}, r[3] = {0, 0, 0};
-    for (std::size_t i = 0; i < t.size(); ++i)
-      {
-        double p = 1;
-        for (unsigned int k = 0; k < 5; ++k, p *= t[i])
-          s[k] += p;
-        r[0] += x[i];
-        r[1] += x[i] * t[i];
-        r[2] += x[i] * t[i] * t[i];
-      }
-    const auto det = [](const double a[3][3]) {
-      return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-             a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-             a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    };
-    const double m[3][3] = {{s[0], s[1], s[2]},
-                            {s[1], s[2], s[3]},
-                            {s[2], s[3], s[4]}};
-    double       m2[3][3];
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        m2[i][j] = j == 2 ? r[i] : m[i][j];
-    return 2 * det(m2) / det(m);
-  }
-
-  std::map<std::string, std::vector<double>>
-  run_scene(std::ostream                   &out,
-            const std::string              &scene,
-            const std::string              &directory,
-            const std::vector<std::string> &settings)
-  {
-    std::vector<std::string> args = {std::string(PSMPM_SOURCE_DIR) + "/prm/" +
-                                       scene,
-                                     "--set",
-                                     "Output directory=" + directory};
-    for (const auto &s : settings)
-      {
-        args.push_back("--set");
-        args.push_back(s);
-      }
-    std::filesystem::remove_all(directory);
-    std::string screen, errors;
-    const int   code = run_app(args, screen, errors);
-    PSMPM_CHECK(out, code == 0);
-    if (code != 0)
-      out << errors << std::endl;
-    return read_statistics(directory);
   }
 } // namespace
 
@@ -113,10 +56,11 @@ main(int argc, char **argv)
       out << basis << std::endl;
       const bool linear = basis == "linear";
       // (a)
-      auto         s        = run_scene(out,
-                         "contact_sliding_block.prm",
-                         "slide",
-                         {"Basis/Type=" + basis, "Time/End time=0.15"});
+      auto s =
+        by_name(run_scene(out,
+                          "contact_sliding_block.prm",
+                          "slide",
+                          {"Basis/Type=" + basis, "Time/End time=0.15"}));
       const double a        = fitted_acceleration(s["time"], s["body1_x"]);
       const double expected = g * (std::sin(theta) - 0.3 * std::cos(theta));
       std::cout << basis << ": a " << a << " (closed form " << expected << ")"
@@ -166,23 +110,23 @@ main(int argc, char **argv)
       const double slid = s["body1_x"].back() - s["body1_x"].front();
 
       // (b)
-      s                  = run_scene(out,
-                    "contact_sliding_block.prm",
-                    "stick",
-                    {"Basis/Type=" + basis,
-                                      "Transfer/Scheme=musl",
-                                      "Time/End time=0.15",
-                                      "Contact/Friction coefficient=0.7"});
+      s = by_name(run_scene(out,
+                            "contact_sliding_block.prm",
+                            "stick",
+                            {"Basis/Type=" + basis,
+                             "Transfer/Scheme=musl",
+                             "Time/End time=0.15",
+                             "Contact/Friction coefficient=0.7"}));
       const double crept = s["body1_x"].back() - s["body1_x"].front();
       std::cout << basis << ": slid " << slid << ", crept " << crept
                 << std::endl;
       PSMPM_CHECK(out, std::abs(crept) < slid * (linear ? 0.06 : 0.03));
 
       // (c)
-      s              = run_scene(out,
-                    "contact_two_disks.prm",
-                    "disks",
-                    {"Basis/Type=" + basis, "Transfer/Scheme=musl"});
+      s = by_name(run_scene(out,
+                            "contact_two_disks.prm",
+                            "disks",
+                            {"Basis/Type=" + basis, "Transfer/Scheme=musl"}));
       const auto  &E = s["total_energy"];
       const double scale =
         s["mass"].front() / 2 * 0.1 * std::sqrt(2.); // one disk's |p|

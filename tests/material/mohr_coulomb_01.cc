@@ -21,7 +21,7 @@
 #include <psmpm/material/drucker_prager.h>
 #include <psmpm/material/mohr_coulomb.h>
 
-#include "../tests.h"
+#include "../material_tests.h"
 
 #include <random>
 
@@ -31,35 +31,11 @@ namespace
 {
   constexpr double degree = numbers::PI / 180;
 
-  template <typename Model>
-  void
-  set_constants(Model       &m,
-                const double phi,
-                const double psi,
-                const double c,
-                const double t = HUGE_VAL)
-  {
-    m.youngs_modulus          = 2e7;
-    m.poisson_ratio           = 0.3;
-    m.density                 = 2000;
-    m.friction_angle          = phi;
-    m.dilatancy_angle         = psi;
-    m.cohesion                = c;
-    m.tension_cutoff          = t;
-    m.residual_cohesion       = c;
-    m.residual_friction_angle = phi;
-    m.softening_strain        = 0;
-  }
-
   /// Principal stresses of a 2D stress with its out-of-plane one.
   std::array<double, 3>
   principal(const SymmetricTensor<2, 2> &s, const double szz)
   {
-    const double c = 0.5 * (s[0][0] + s[1][1]), h = 0.5 * (s[0][0] - s[1][1]);
-    const double r          = std::sqrt(h * h + s[0][1] * s[0][1]);
-    std::array<double, 3> p = {{c + r, c - r, szz}};
-    std::sort(p.begin(), p.end(), std::greater<double>());
-    return p;
+    return sorted_principal(s[0][0], s[1][1], s[0][1], szz);
   }
 
   double
@@ -161,7 +137,7 @@ namespace
                0.02}})
       {
         Material::MohrCoulomb<2> m;
-        set_constants(m, k.phi, k.psi, k.c, k.t);
+        set_soil_constants(m, k.phi, k.psi, k.c, k.t);
         m.residual_cohesion       = k.residual_c;
         m.residual_friction_angle = k.residual_phi;
         m.softening_strain        = k.softening;
@@ -190,7 +166,7 @@ namespace
           {"DP von Mises c 20 kPa", Fit::plane_strain, 0, 0, 2e4}})
       {
         Material::DruckerPrager<2> m;
-        set_constants(m, phi, psi, c);
+        set_soil_constants(m, phi, psi, c);
         m.fit                                                = fit;
         typename Material::PlasticHypoelastic<2>::Strength s = m.strength(0);
         m.prepare(s);
@@ -208,7 +184,7 @@ namespace
   {
     Material::MohrCoulomb<2> m;
     const double             phi = 30, psi = 10, c = 1e4;
-    set_constants(m, phi, psi, c, 5e3);
+    set_soil_constants(m, phi, psi, c, 5e3);
     const auto   s  = m.strength(0);
     const double sp = std::sin(phi * degree), ss = std::sin(psi * degree);
     const double E = m.youngs_modulus, nu = m.poisson_ratio;
@@ -258,7 +234,7 @@ namespace
     // Apex and cutoff: a hydrostatic tension beyond t and beyond the apex.
     {
       Material::MohrCoulomb<2> no_cutoff;
-      set_constants(no_cutoff, phi, psi, c);
+      set_soil_constants(no_cutoff, phi, psi, c);
       const auto            s2   = no_cutoff.strength(0);
       const double          apex = c * std::cos(phi * degree) / sp;
       std::array<double, 3> y    = {{2 * apex, 1.9 * apex, 1.8 * apex}};
@@ -286,8 +262,8 @@ namespace
       {
         Material::MohrCoulomb<2>   mc;
         Material::DruckerPrager<2> dpm;
-        set_constants(mc, 30, 0, 1e4);
-        set_constants(dpm, 30, 0, 1e4);
+        set_soil_constants(mc, 30, 0, 1e4);
+        set_soil_constants(dpm, 30, 0, 1e4);
         const Material::Material<2> &m =
           dp ? static_cast<const Material::Material<2> &>(dpm) : mc;
         std::vector<SymmetricTensor<2, 2>> stress(1);
@@ -386,7 +362,7 @@ namespace
       for (const double psi : {0., 0.5 * phi, phi})
         {
           Material::MohrCoulomb<2> m;
-          set_constants(m, phi, psi, 0);
+          set_soil_constants(m, phi, psi, 0);
           const auto [ratio, dilatancy] = biaxial(m, 1e5);
           const double sp               = std::sin(phi * degree);
           const double expected         = (1 + sp) / (1 - sp);
@@ -403,7 +379,7 @@ namespace
           if (psi == phi)
             {
               Material::DruckerPrager<2> d;
-              set_constants(d, phi, psi, 0);
+              set_soil_constants(d, phi, psi, 0);
               const auto [dp_ratio, dp_dilatancy] = biaxial(d, 1e5);
               (void)dp_dilatancy;
               out << "DP plane strain phi " << phi

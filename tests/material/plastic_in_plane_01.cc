@@ -15,7 +15,7 @@
 #include <psmpm/material/drucker_prager.h>
 #include <psmpm/material/mohr_coulomb.h>
 
-#include "../tests.h"
+#include "../material_tests.h"
 
 #include <random>
 
@@ -23,39 +23,6 @@ using namespace psmpm;
 
 namespace
 {
-  template <typename Model>
-  void
-  set_constants(Model       &m,
-                const double phi,
-                const double psi,
-                const double c,
-                const double t = HUGE_VAL)
-  {
-    m.youngs_modulus          = 2e7;
-    m.poisson_ratio           = 0.3;
-    m.density                 = 2000;
-    m.friction_angle          = phi;
-    m.dilatancy_angle         = psi;
-    m.cohesion                = c;
-    m.tension_cutoff          = t;
-    m.residual_cohesion       = c;
-    m.residual_friction_angle = phi;
-    m.softening_strain        = 0;
-  }
-
-  std::array<double, 3>
-  sorted_principal(const double xx,
-                   const double yy,
-                   const double xy,
-                   const double zz)
-  {
-    const double          c = 0.5 * (xx + yy), h = 0.5 * (xx - yy);
-    const double          r = std::sqrt(h * h + xy * xy);
-    std::array<double, 3> p = {{c + r, c - r, zz}};
-    std::sort(p.begin(), p.end(), std::greater<double>());
-    return p;
-  }
-
   /// Random paths of @p n particles; every update is checked against the
   /// trial stress recomputed here. @p principal_return(strength, sigma)
   /// is the model's return in principal space.
@@ -185,33 +152,18 @@ main()
 {
   return run_test([] {
     std::ofstream out("output");
-    const double  inf = HUGE_VAL;
-    struct Case
-    {
-      const char *label;
-      double      phi, psi, c, t, drift;
-    };
-    for (const Case &k :
-         {Case{"MC phi 30 psi 0 c 1 kPa", 30, 0, 1e3, inf, 0},
-          Case{"MC phi 35 psi 35 c 0", 35, 35, 0, inf, 1e-4},
-          Case{"MC phi 20 psi 5 c 5 kPa t 2 kPa", 20, 5, 5e3, 2e3, 2e-4},
-          Case{"MC Tresca c 1e-6 Pa", 0, 0, 1e-6, inf, -2e-4}})
+    for (const SoilCase &k : mohr_coulomb_paths())
       {
-        Material::MohrCoulomb<2> m;
-        set_constants(m, k.phi, k.psi, k.c, k.t);
+        const auto m = make_soil<Material::MohrCoulomb<2>>(k);
         const auto s = m.strength(0);
         check(out, k.label, m, k.drift, [&](std::array<double, 3> &sigma) {
           return m.return_stress(s, sigma);
         });
       }
     using Fit = Material::DruckerPrager<2>::Fit;
-    for (const Case &k :
-         {Case{"DP phi 30 psi 0 c 1 kPa", 30, 0, 1e3, inf, 0},
-          Case{"DP phi 35 psi 35 c 0", 35, 35, 0, inf, 1e-4},
-          Case{"DP von Mises c 1e-6 Pa", 0, 0, 1e-6, inf, -2e-4}})
+    for (const SoilCase &k : drucker_prager_paths())
       {
-        Material::DruckerPrager<2> m;
-        set_constants(m, k.phi, k.psi, k.c);
+        auto m = make_soil<Material::DruckerPrager<2>>(k);
         m.fit  = Fit::outer;
         auto s = m.strength(0);
         m.prepare(s);
