@@ -130,55 +130,78 @@ namespace psmpm
         /// constants of a batch: its Strength).
         static constexpr bool returns_pairs = true;
 
-        static typename PlasticHypoelastic<dim>::Strength
+        /// The cone's constants in both lanes, made once per batch (a
+        /// scalar constant is broadcast where it is used, two
+        /// instructions per use and pair).
+        struct LaneConstants
+        {
+          explicit LaneConstants(
+            const typename PlasticHypoelastic<dim>::Strength &s)
+            : eta(Lanes::broadcast(s.derived[0]))
+            , xi_c(Lanes::broadcast(s.derived[1]))
+            , eta_bar(Lanes::broadcast(s.derived[2]))
+            , G(Lanes::broadcast(s.derived[3]))
+            , K_eta_bar(Lanes::broadcast(s.derived[4] * s.derived[2]))
+            , inv_modulus(Lanes::broadcast(s.derived[5]))
+          {
+          }
+
+          Lanes::Value eta, xi_c, eta_bar, G;
+          /// K eta_bar: the product the scalar return forms first.
+          Lanes::Value K_eta_bar;
+          /// 1 / (G + K eta eta_bar): gamma = f times this.
+          Lanes::Value inv_modulus;
+        };
+
+        static LaneConstants
         lane_constants(const typename PlasticHypoelastic<dim>::Strength &s)
         {
-          return s;
+          return LaneConstants(s);
         }
 
         /// inside_plane() of two particles in Lanes.
         Lanes::Mask
-        inside_plane_pair(const typename PlasticHypoelastic<dim>::Strength &s,
-                          const Lanes::Value                                c,
-                          const Lanes::Value                                r2,
-                          const Lanes::Value z) const
+        inside_plane_pair(const LaneConstants &s,
+                          const Lanes::Value   c,
+                          const Lanes::Value   r2,
+                          const Lanes::Value   z) const
         {
           const Lanes::Value p     = (2. * c + z) * (1. / 3);
-          const Lanes::Value bound = s.derived[1] - s.derived[0] * p;
+          const Lanes::Value bound = s.xi_c - s.eta * p;
           const Lanes::Value j2 =
             (c - p) * (c - p) + r2 + 0.5 * (z - p) * (z - p);
-          return (bound >= 0) & (j2 <= bound * bound);
+          return Lanes::both(bound >= 0, j2 <= bound * bound);
         }
 
         /// in_plane() of two particles in Lanes onto the cone (not the
         /// apex): the lanes where that is the answer, with @p t, @p ep and
         /// @p d_kappa there (operation by operation in_plane()'s).
         Lanes::Mask
-        in_plane_pair(const typename PlasticHypoelastic<dim>::Strength &s,
-                      Lanes::Value                                      t[4],
-                      Lanes::Value                                      ep[4],
-                      Lanes::Value &d_kappa) const
+        in_plane_pair(const LaneConstants &s,
+                      Lanes::Value         t[4],
+                      Lanes::Value         ep[4],
+                      Lanes::Value        &d_kappa) const
         {
           using Lanes::Value;
-          const double eta = s.derived[0], xi_c = s.derived[1],
-                       eta_bar = s.derived[2];
-          const Value p        = (t[0] + t[1] + t[3]) * (1. / 3);
+          const Value eta = s.eta, xi_c = s.xi_c, eta_bar = s.eta_bar;
+          const Value p   = (t[0] + t[1] + t[3]) * (1. / 3);
           const Value dxx = t[0] - p, dyy = t[1] - p, dzz = t[3] - p,
                       dxy = t[2];
           const Value q =
             Lanes::sqrt(0.5 * (dxx * dxx + dyy * dyy + dzz * dzz) + dxy * dxy);
           const Value       f         = q + eta * p - xi_c;
           constexpr double  inv_sqrt3 = 0.57735026918962576451;
-          const double      G         = s.derived[3];
-          const Value       gamma     = f * s.derived[5];
-          const Lanes::Mask cone = ~(f <= 0) & (q - G * gamma >= 0) & (q > 0);
+          const Value       G         = s.G;
+          const Value       gamma     = f * s.inv_modulus;
+          const Lanes::Mask cone =
+            Lanes::and_not(f <= 0, Lanes::both(q - G * gamma >= 0, q > 0));
           if (!Lanes::any(cone))
             return cone;
           const Value r          = gamma / q;
           const Value h          = 0.5 * r;
           const Value volumetric = eta_bar * gamma * (1. / 3);
           const Value factor     = 1 - G * r;
-          const Value p_new      = p - s.derived[4] * eta_bar * gamma;
+          const Value p_new      = p - s.K_eta_bar * gamma;
           d_kappa                = gamma * inv_sqrt3;
           ep[0]                  = h * dxx + volumetric;
           ep[1]                  = h * dyy + volumetric;

@@ -705,7 +705,7 @@ namespace psmpm
         e[1]    = Lanes::broadcast(0);
         e[2]    = dm * c.b2;
         d_kappa = dm * c.main_equivalent;
-        return (dm > 0) & acceptable_pair(y, c);
+        return Lanes::both(dm > 0, acceptable_pair(y, c));
       }
 
       /// return_to_edge() of @p x in Lanes onto edge 2 where @p two, else
@@ -740,7 +740,8 @@ namespace psmpm
         e[2]              = d0 * c.b2 + select(two, zero, d1 * c.b2);
         const Value cross = Lanes::pick(two, c.cross, c.cross_bits);
         d_kappa = Lanes::sqrt(c.q * (d0 * d0 + d1 * d1) + 2. * cross * d0 * d1);
-        return (E[7] != 0) & (d0 >= 0) & (d1 >= 0) & acceptable_pair(y, c);
+        return Lanes::both(Lanes::both(E[7] != 0, d0 >= 0),
+                           Lanes::both(d1 >= 0, acceptable_pair(y, c)));
       }
 
       /**
@@ -764,7 +765,8 @@ namespace psmpm
         using Lanes::select;
         using Lanes::Value;
         const Value f = c.one_plus_sp * x[0] - c.one_minus_sp * x[2] - c.k;
-        const Mask  plastic    = ~((f <= 0) & (x[0] <= c.cutoff));
+        const Mask  plastic =
+          Lanes::and_not(Lanes::both(f <= 0, x[0] <= c.cutoff), Mask{-1, -1});
         const Value dl         = f * c.main_inverse;
         const Value g01        = (x[0] - x[1]) - dl * c.Db01;
         const Value g12        = (x[1] - x[2]) - dl * c.Db12;
@@ -774,12 +776,16 @@ namespace psmpm
         const Mask  two        = g12 < 0;
         // Each path only if a lane may take it.
         Mask main_ok = {}, edge_ok = {};
-        if (Lanes::any(main_first & plastic))
-          main_ok = main_first & main_plane_pair(c, x, y, e, d_kappa);
-        if (Lanes::any(~main_first & plastic))
+        // Masks combined with Lanes::both(), either(), and_not(): see
+        // both().
+        if (Lanes::any(Lanes::both(main_first, plastic)))
+          main_ok =
+            Lanes::both(main_first, main_plane_pair(c, x, y, e, d_kappa));
+        if (Lanes::any(Lanes::and_not(main_first, plastic)))
           {
             Value ye[3], ee[3], ke;
-            edge_ok = ~main_first & edge_pair(c, x, two, ye, ee, ke);
+            edge_ok =
+              Lanes::and_not(main_first, edge_pair(c, x, two, ye, ee, ke));
             const bool some_main = Lanes::any(main_ok);
             for (unsigned int i = 0; i < 3; ++i)
               {
@@ -788,7 +794,7 @@ namespace psmpm
               }
             d_kappa = some_main ? select(main_ok, d_kappa, ke) : ke;
           }
-        return plastic & (main_ok | edge_ok);
+        return Lanes::both(plastic, Lanes::either(main_ok, edge_ok));
       }
 
       /// return_plane_strain() of two particles' stresses @p t in Lanes
@@ -851,11 +857,14 @@ namespace psmpm
         using Lanes::Mask;
         using Lanes::select;
         using Lanes::Value;
-        const Value dz     = z - c;
-        const Value dz2    = dz * dz;
-        const Mask  above  = (dz >= 0) & (dz2 >= r2);
-        const Mask  below  = ~above & (dz <= 0) & (dz2 >= r2);
-        const Mask  middle = ~above & ~below;
+        const Value dz  = z - c;
+        const Value dz2 = dz * dz;
+        // Masks combined with Lanes::both() and and_not(): see both().
+        const Mask above = Lanes::both(dz >= 0, dz2 >= r2);
+        const Mask below =
+          Lanes::and_not(above, Lanes::both(dz <= 0, dz2 >= r2));
+        const Mask middle =
+          Lanes::and_not(above, Lanes::and_not(below, Mask{-1, -1}));
         const Value alpha2 =
           Lanes::pick(middle,
                       Lanes::pick(below, k.above, k.below_bits),
@@ -867,8 +876,10 @@ namespace psmpm
                         k.k + k.one_minus_sp * z - k.one_plus_sp * c,
                         k.k - k.two_sp * c));
         const Value cut = k.cutoff - c;
-        return (beta >= 0) & (alpha2 * r2 <= beta * beta) & (z <= k.cutoff) &
-               (cut >= 0) & (r2 <= cut * cut);
+        using Lanes::both;
+        return both(both(both(beta >= 0, alpha2 * r2 <= beta * beta),
+                         both(z <= k.cutoff, cut >= 0)),
+                    r2 <= cut * cut);
       }
 
 

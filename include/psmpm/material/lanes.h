@@ -53,7 +53,14 @@ namespace psmpm
       inline Value
       select(const Mask m, const Value a, const Value b)
       {
+#ifdef __SSE2__
+        // andpd, andnpd, orpd: GCC 12 compiles m ? a : b with a mask
+        // combined by both() or either() into a branch per lane.
+        const __m128d mm = reinterpret_cast<__m128d>(m);
+        return _mm_or_pd(_mm_and_pd(mm, a), _mm_andnot_pd(mm, b));
+#else
         return m ? a : b;
+#endif
       }
 
       /// The bits in which @p a and @p b differ, for pick().
@@ -105,16 +112,102 @@ namespace psmpm
 #endif
       }
 
+      /// The lanes where @p m holds as bits 0 and 1 (one movmskpd: a
+      /// test of m[0] and m[1] element by element goes through two
+      /// general-purpose registers and a dozen instructions).
+      inline int
+      lane_bits(const Mask m)
+      {
+#ifdef __SSE2__
+        return _mm_movemask_pd(reinterpret_cast<__m128d>(m));
+#else
+        return (m[0] != 0 ? 1 : 0) | (m[1] != 0 ? 2 : 0);
+#endif
+      }
+
+      /// a & b lane by lane. The operators on two comparisons' results
+      /// are right inside an expression (select()), but GCC 12 turns
+      /// their result into a Mask value (lane_bits(), pick(), a function's
+      /// result) lane by lane through general registers, a dozen
+      /// instructions; andpd is one.
+      inline Mask
+      both(const Mask a, const Mask b)
+      {
+#ifdef __SSE2__
+        return reinterpret_cast<Mask>(_mm_and_pd(reinterpret_cast<__m128d>(a),
+                                                 reinterpret_cast<__m128d>(b)));
+#else
+        return a & b;
+#endif
+      }
+
+      /// a | b lane by lane (orpd), see both().
+      inline Mask
+      either(const Mask a, const Mask b)
+      {
+#ifdef __SSE2__
+        return reinterpret_cast<Mask>(_mm_or_pd(reinterpret_cast<__m128d>(a),
+                                                reinterpret_cast<__m128d>(b)));
+#else
+        return a | b;
+#endif
+      }
+
+      /// ~a & b lane by lane (andnpd), see both().
+      inline Mask
+      and_not(const Mask a, const Mask b)
+      {
+#ifdef __SSE2__
+        return reinterpret_cast<Mask>(
+          _mm_andnot_pd(reinterpret_cast<__m128d>(a),
+                        reinterpret_cast<__m128d>(b)));
+#else
+        return ~a & b;
+#endif
+      }
+
       inline bool
       any(const Mask m)
       {
-        return (m[0] | m[1]) != 0;
+        return lane_bits(m) != 0;
       }
 
       inline bool
       all(const Mask m)
       {
-        return (m[0] & m[1]) != 0;
+        return lane_bits(m) == 3;
+      }
+
+      /// a where m does not hold, +0 where it does (bitwise: the bits of
+      /// the scalar assignment x = 0).
+      inline Value
+      zero_where(const Mask m, const Value a)
+      {
+        return reinterpret_cast<Value>(reinterpret_cast<Mask>(a) & ~m);
+      }
+
+      /// Two adjacent doubles at @p p (any alignment).
+      inline Value
+      load(const double *p)
+      {
+        Value v;
+        __builtin_memcpy(&v, p, sizeof(v));
+        return v;
+      }
+
+      /// @p v to two adjacent doubles at @p p (any alignment).
+      inline void
+      store(double *p, const Value v)
+      {
+        __builtin_memcpy(p, &v, sizeof(v));
+      }
+
+      /// (a[i], b[j]) for lane indices i, j in {0, 1}.
+      template <int i, int j>
+      inline Value
+      combine(const Value a, const Value b)
+      {
+        return __builtin_shuffle(a, b, Mask{i, 2 + j});
       }
     } // namespace Lanes
   }   // namespace Material

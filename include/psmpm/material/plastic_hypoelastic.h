@@ -313,6 +313,18 @@ namespace psmpm
                             const double                 d_kappa,
                             double                      *block);
 
+      /// add_plastic_increment() of two particles (@p block0, @p block1)
+      /// with the volume ratios @p J, operation by operation, on the
+      /// state columns transposed into pairs.
+      static void
+      add_plastic_increment_pair(const BatchConstants &c,
+                                 const Lanes::Value    J,
+                                 const Lanes::Value    t[4],
+                                 const Lanes::Value    ep[4],
+                                 const Lanes::Value    d_kappa,
+                                 double               *block0,
+                                 double               *block1);
+
     protected:
       bool
       softens() const

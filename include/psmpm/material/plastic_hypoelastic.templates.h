@@ -334,6 +334,37 @@ namespace psmpm
 
 
     template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::add_plastic_increment_pair(
+      const BatchConstants &c,
+      const Lanes::Value    J,
+      const Lanes::Value    t[4],
+      const Lanes::Value    ep[4],
+      const Lanes::Value    d_kappa,
+      double               *block0,
+      double               *block1)
+    {
+      using namespace Lanes;
+      static_assert(plastic_xx == 1 && work_column == kappa_column + 1);
+      double *const e0 = block0 + plastic_xx;
+      double *const e1 = block1 + plastic_xx;
+      store(e0, load(e0) + combine<0, 0>(ep[0], ep[1]));
+      store(e0 + 2, load(e0 + 2) + combine<0, 0>(ep[2], ep[3]));
+      store(e1, load(e1) + combine<1, 1>(ep[0], ep[1]));
+      store(e1 + 2, load(e1 + 2) + combine<1, 1>(ep[2], ep[3]));
+      const Value kw0 = load(block0 + kappa_column);
+      const Value kw1 = load(block1 + kappa_column);
+      const Value dot =
+        t[0] * ep[0] + t[1] * ep[1] + 2. * t[2] * ep[2] + t[3] * ep[3];
+      const Value kappa = combine<0, 0>(kw0, kw1) + d_kappa;
+      const Value work  = combine<1, 1>(kw0, kw1) + J * dot * c.inv_rho0;
+      store(block0 + kappa_column, combine<0, 0>(kappa, work));
+      store(block1 + kappa_column, combine<1, 1>(kappa, work));
+    }
+
+
+
+    template <int dim>
     template <typename Return, typename LaneConstants>
     DEAL_II_ALWAYS_INLINE inline void
     PlasticHypoelastic<dim>::update_plane_strain_pair(
@@ -356,58 +387,78 @@ namespace psmpm
                               pair(block0[out_of_plane], block1[out_of_plane]),
                               tr,
                               t);
-      for (unsigned int l = 0; l < 2; ++l)
-        {
-          block[l][ratio_column] *= 1 + tr[l];
-          volume_ratio[l] = 1 + tr[l];
-        }
+      const Value ratio = 1 + tr;
+      const Value J = pair(block0[ratio_column], block1[ratio_column]) * ratio;
+      block0[ratio_column] = J[0];
+      block1[ratio_column] = J[1];
+      store(volume_ratio, ratio);
       const Value centre  = 0.5 * (t[0] + t[1]);
       const Value half    = 0.5 * (t[0] - t[1]);
       const Value radius2 = half * half + t[2] * t[2];
       // Disconnected grains (update_plane_strain()): no return, no stress.
-      const Mask disconnected =
-        pair(block0[ratio_column], block1[ratio_column]) > c.disconnected_ratio;
-      const Mask outside =
-        ~ret.inside_plane_pair(lanes, centre, radius2, t[3]) & ~disconnected;
-      if (any(outside))
+      const Mask disconnected = J > c.disconnected_ratio;
+      // The lanes as bits: the complement of a Mask is not one
+      // instruction in SSE2 (GCC goes through general registers).
+      const int outside =
+        ~(lane_bits(ret.inside_plane_pair(lanes, centre, radius2, t[3])) |
+          lane_bits(disconnected)) &
+        3;
+      // The two stresses are six adjacent values, xx, yy, xy of each
+      // (SymmetricTensor<2, 2> stores its diagonal first): three packed
+      // stores from registers instead of six of single lanes. The values
+      // by value: the elastic path's t stays in registers.
+      static_assert(sizeof(SymmetricTensor<2, 2>) == 3 * sizeof(double));
+      const auto write = [&](Value xx, Value yy, Value xy, Value zz) {
+        if (any(disconnected))
+          {
+            xx = zero_where(disconnected, xx);
+            yy = zero_where(disconnected, yy);
+            xy = zero_where(disconnected, xy);
+            zz = zero_where(disconnected, zz);
+          }
+        double *const s_xx = &stress[0][0][0];
+        store(s_xx, combine<0, 0>(xx, yy));
+        store(s_xx + 2, combine<0, 1>(xy, xx));
+        store(s_xx + 4, combine<1, 1>(yy, xy));
+        block0[out_of_plane] = zz[0];
+        block1[out_of_plane] = zz[1];
+      };
+      if (outside == 0)
         {
-          Value      r[4] = {t[0], t[1], t[2], t[3]}, ep[4], d_kappa;
-          const Mask done = outside & ret.in_plane_pair(lanes, r, ep, d_kappa);
-          for (unsigned int l = 0; l < 2; ++l)
-            {
-              std::array<double, 4> tl = {{t[0][l], t[1][l], t[2][l], t[3][l]}};
-              if (done[l])
-                {
-                  tl = {{r[0][l], r[1][l], r[2][l], r[3][l]}};
-                  add_plastic_increment(
-                    c,
-                    tl,
-                    {{ep[0][l], ep[1][l], ep[2][l], ep[3][l]}},
-                    d_kappa[l],
-                    block[l]);
-                }
-              else if (outside[l])
-                {
-                  // Off the common path: the one-particle return.
-                  std::array<double, 4> epl;
-                  double                dkl;
-                  if (ret.in_plane(s, tl, epl, dkl))
-                    add_plastic_increment(c, tl, epl, dkl, block[l]);
-                }
-              for (unsigned int k = 0; k < 4; ++k)
-                t[k][l] = tl[k];
-            }
+          write(t[0], t[1], t[2], t[3]);
+          return;
         }
-      for (unsigned int l = 0; l < 2; ++l)
+      // The returns read and write r, not t.
+      Value     r[4] = {t[0], t[1], t[2], t[3]}, ep[4], d_kappa = {};
+      const int done =
+        outside & lane_bits(ret.in_plane_pair(lanes, r, ep, d_kappa));
+      if (done == 3)
         {
-          if (disconnected[l])
+          add_plastic_increment_pair(c, J, r, ep, d_kappa, block0, block1);
+        }
+      else
+        for (unsigned int l = 0; l < 2; ++l)
+          {
+            std::array<double, 4> tl = {{r[0][l], r[1][l], r[2][l], r[3][l]}};
+            if ((done >> l) & 1)
+              add_plastic_increment(c,
+                                    tl,
+                                    {{ep[0][l], ep[1][l], ep[2][l], ep[3][l]}},
+                                    d_kappa[l],
+                                    block[l]);
+            else
+              {
+                tl = {{t[0][l], t[1][l], t[2][l], t[3][l]}};
+                std::array<double, 4> epl;
+                double                dkl;
+                // Off the common path: the one-particle return.
+                if (((outside >> l) & 1) && ret.in_plane(s, tl, epl, dkl))
+                  add_plastic_increment(c, tl, epl, dkl, block[l]);
+              }
             for (unsigned int k = 0; k < 4; ++k)
-              t[k][l] = 0;
-          stress[l][0][0]        = t[0][l];
-          stress[l][1][1]        = t[1][l];
-          stress[l][0][1]        = t[2][l];
-          block[l][out_of_plane] = t[3][l];
-        }
+              r[k][l] = tl[k];
+          }
+      write(r[0], r[1], r[2], r[3]);
     }
 
 
