@@ -147,9 +147,19 @@ class Scene:
             self.lines = f.read().split(b"\n")
         self.entries = []  # (path, line index)
         self.values = {}
+        # The last line of each entry's value: deal.II joins a line that
+        # ends in a backslash with the next one, so an edited value must
+        # replace the continuation lines too.
+        self.last_line = {}
         stack = []
-        for i, raw in enumerate(self.lines):
-            line = raw.split(b"#")[0].strip()
+        i = 0
+        while i < len(self.lines):
+            first, joined = i, self.lines[i].rstrip()
+            while joined.endswith(b"\\") and i + 1 < len(self.lines):
+                i += 1
+                joined = joined[:-1] + b" " + self.lines[i].strip()
+            i += 1
+            line = joined.split(b"#")[0].strip()
             if line.startswith(b"subsection "):
                 stack.append(line[11:].strip().decode())
             elif line == b"end":
@@ -157,7 +167,8 @@ class Scene:
             elif line.startswith(b"set "):
                 key, _, value = line[4:].partition(b"=")
                 path = "/".join(stack + [key.strip().decode()])
-                self.entries.append((path, i))
+                self.entries.append((path, first))
+                self.last_line[first] = i - 1
                 self.values[path] = value.strip()
         self.problem = self.values.get("Problem", b"mpm").decode()
 
@@ -175,7 +186,8 @@ class Scene:
         raw = lines[index]
         indent = raw[: len(raw) - len(raw.lstrip())]
         key = raw.strip()[4:].split(b"=")[0].strip()
-        lines[index] = indent + b"set " + key + b" = " + value
+        lines[index : self.last_line[index] + 1] = [
+            indent + b"set " + key + b" = " + value]
         return b"\n".join(lines)
 
     def json(self):
