@@ -8,7 +8,6 @@
 
 #include "../material_tests.h"
 
-#include <cstring>
 #include <random>
 
 using namespace psmpm;
@@ -19,14 +18,11 @@ namespace
   void
   check(std::ostream &out, const std::string &label, Model &m)
   {
-    m.disconnected_volume_ratio          = 1.01;
-    const unsigned int                 n = 65, n_steps = 300, ns = m.n_state();
-    std::vector<SymmetricTensor<2, 2>> stress(n), single_stress(n);
-    std::vector<Tensor<2, 2>>          dL(n);
-    std::vector<double> state(n * ns), single_state(n * ns), ratio(n),
-      single_ratio(n);
-    m.initialize(n, state.data());
-    std::mt19937                           rng(5);
+    m.disconnected_volume_ratio = 1.01;
+    const unsigned int        n = 65, n_steps = 300, ns = m.n_state();
+    BatchAndSingleUpdates     u2(m, n);
+    std::vector<Tensor<2, 2>> dL(n);
+    std::mt19937              rng(5);
     std::uniform_real_distribution<double> u(-1, 1);
     unsigned int differing = 0, disconnected = 0, plastic = 0, mixed = 0;
     for (unsigned int step = 0; step < n_steps; ++step)
@@ -37,29 +33,14 @@ namespace
           for (unsigned int i = 0; i < 2; ++i)
             for (unsigned int j = 0; j < 2; ++j)
               dL[p][i][j] = 5e-4 * u(rng) + (i == j ? drift : 0);
-        single_stress                    = stress;
-        single_state                     = state;
-        const std::vector<double> before = state;
-        m.update(n, dL.data(), stress.data(), state.data(), ratio.data());
-        for (unsigned int p = 0; p < n; ++p)
-          m.update(1,
-                   &dL[p],
-                   &single_stress[p],
-                   &single_state[p * ns],
-                   &single_ratio[p]);
+        u2.update(dL);
         std::vector<bool> off(n);
         for (unsigned int p = 0; p < n; ++p)
           {
-            off[p] = stress[p].norm() == 0 && state[p * ns] == 0;
+            off[p] = u2.stress[p].norm() == 0 && u2.state[p * ns] == 0;
             disconnected += off[p] ? 1 : 0;
-            plastic += state[p * ns + 5] > before[p * ns + 5] ? 1 : 0;
-            differing +=
-              std::memcmp(&stress[p], &single_stress[p], sizeof(stress[p])) !=
-                0 ||
-              std::memcmp(&state[p * ns],
-                          &single_state[p * ns],
-                          ns * sizeof(double)) != 0 ||
-              std::memcmp(&ratio[p], &single_ratio[p], sizeof(double)) != 0;
+            plastic += u2.state[p * ns + 5] > u2.before[p * ns + 5] ? 1 : 0;
+            differing += u2.differs(p) ? 1 : 0;
           }
         for (unsigned int p = 0; p + 1 < n; p += 2)
           mixed += off[p] != off[p + 1] ? 1 : 0;
