@@ -126,6 +126,18 @@ namespace psmpm
         "dynamics (it slows a free fall too). Its work is the statistics "
         "column damping_work. 0: off.");
       prm.declare_entry(
+        "Stop particles at walls",
+        "false",
+        Patterns::Bool(),
+        "Whether the particles receive the velocity change with which the "
+        "walls stop the grid: after MUSL's second projection the fixed and "
+        "prescribed DoFs are set to their constrained velocity, and the "
+        "same change, interpolated, goes to the particles' velocities (as "
+        "a sticking frictional wall's hold does), so that particles at a "
+        "wall keep no velocity into it that they do not move with. The "
+        "particles' kinetic energy removed is the column wall_stop_work "
+        "(material that meets a wall stops there: an inelastic impact). Transfer/Scheme = musl only.");
+      prm.declare_entry(
         "Boundary parts",
         "",
         Patterns::Anything(),
@@ -141,6 +153,7 @@ namespace psmpm
     BoundaryConditions<dim>::parse_parameters(ParameterHandler &prm)
     {
       report_reactions = prm.get_bool("Report reactions");
+      stop_at_walls    = prm.get_bool("Stop particles at walls");
       local_damping    = prm.get_double("Local damping");
       AssertThrow(local_damping < 1,
                   ExcMessage("Boundary conditions/Local damping = " +
@@ -574,8 +587,22 @@ namespace psmpm
       hold_capacity.assign(walls.size(), 0.);
       hold_change.assign(walls.size(), 0.);
       wall_owned.assign(walls.size(), true);
-      sum_over_ranks = !friction.empty() && Utilities::MPI::n_mpi_processes(
-                                              grid.get_communicator()) > 1;
+      sum_over_ranks =
+        (!friction.empty() || stop_at_walls) &&
+        Utilities::MPI::n_mpi_processes(grid.get_communicator()) > 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          stop_momentum[d].assign(stop_at_walls ? wall_of.size() : 0, 0.);
+          stop_mass[d].assign(stop_at_walls ? wall_of.size() : 0, 0.);
+        }
+      stop_cell.assign(stop_at_walls ?
+                         grid.cell_dofs().size() / grid.dofs_per_cell :
+                         0,
+                       0);
+      if (stop_at_walls)
+        for (unsigned int d = 0; d < dim; ++d)
+          for (const Entry &e : entries[d])
+            stop_cell[e.index / grid.dofs_per_cell] = 1;
       if (sum_over_ranks)
         {
           const auto &owned    = grid.locally_owned_dofs();
@@ -859,6 +886,88 @@ namespace psmpm
     }
 
     template <int dim>
+    void
+    BoundaryConditions<dim>::check_transfer(const std::string &scheme) const
+    {
+      AssertThrow(!stop_at_walls || scheme == "musl",
+                  ExcMessage("Boundary conditions/Stop particles at walls = "
+                             "true: needs Transfer/Scheme = musl (the "
+                             "change is taken from MUSL's second "
+                             "projection); this run has " +
+                             scheme + "."));
+    }
+
+    template <int dim>
+    bool
+    BoundaryConditions<dim>::stop_change(const State<dim> &state)
+    {
+      // The velocity each constrained DoF had before its constraint: the
+      // projected momentum of its cells over their lumped mass (owned
+      // cells, summed over the ranks that hold the DoF). stop_momentum
+      // becomes the constraint's change dv_i = v_i - p_i / m_i.
+      const auto &grid     = *state.grid;
+      const auto &dofs     = grid.cell_dofs();
+      const auto &cells    = grid.cell_arrays();
+      const auto &exchange = grid.ghost_exchange();
+      bool        any      = false;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          auto &dv   = stop_momentum[d];
+          auto &mass = stop_mass[d];
+          std::fill(dv.begin(), dv.end(), 0.);
+          std::fill(mass.begin(), mass.end(), 0.);
+          for (const Entry &e : entries[d])
+            {
+              dv[dofs[e.index]] += cells.rhs[e.index][d];
+              mass[dofs[e.index]] += cells.lumped[e.index];
+            }
+          if (sum_over_ranks)
+            for (auto *sums : {&dv, &mass})
+              {
+                exchange.sum_to_owned(*sums, owned_buffer.data());
+                exchange.owned_to_relevant(owned_buffer.data(), *sums);
+              }
+          for (unsigned int l = 0; l < dv.size(); ++l)
+            {
+              dv[l] =
+                mass[l] > 0 ? state.grid_velocity[l][d] - dv[l] / mass[l] : 0.;
+              any = any || dv[l] != 0;
+            }
+        }
+      return Utilities::MPI::logical_or(any, grid.get_communicator());
+    }
+
+    template <int dim>
+    void
+    BoundaryConditions<dim>::stop_particles(State<dim> &state)
+    {
+      if (!stop_at_walls || !stop_change(state))
+        return;
+      // The particles' kinetic energy change is the work.
+      const auto        &grid      = *state.grid;
+      auto              &particles = state.particles;
+      const unsigned int n         = grid.dofs_per_cell;
+      const auto        &dofs      = grid.cell_dofs();
+      double             work      = 0;
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        {
+          if (!stop_cell[particles.cell[p]])
+            continue;
+          const unsigned int base = particles.cell[p] * n;
+          const double      *phi  = &state.shape_values[p * n];
+          Tensor<1, dim>     change;
+          for (unsigned int k = 0; k < n; ++k)
+            for (unsigned int d = 0; d < dim; ++d)
+              change[d] += phi[k] * stop_momentum[d][dofs[base + k]];
+          work += particles.mass[p] *
+                  (particles.velocity[p] * change + 0.5 * change * change);
+          particles.velocity[p] += change;
+        }
+      accumulated_stop_work +=
+        Utilities::MPI::sum(work, grid.get_communicator());
+    }
+
+    template <int dim>
     std::vector<std::string>
     BoundaryConditions<dim>::column_names() const
     {
@@ -880,6 +989,8 @@ namespace psmpm
         names.emplace_back("prescribed_work");
       if (local_damping > 0)
         names.emplace_back("damping_work");
+      if (stop_at_walls)
+        names.emplace_back("wall_stop_work");
       return names;
     }
 
@@ -897,6 +1008,8 @@ namespace psmpm
         table.add_value("prescribed_work", accumulated_prescribed_work);
       if (local_damping > 0)
         table.add_value("damping_work", accumulated_damping_work);
+      if (stop_at_walls)
+        table.add_value("wall_stop_work", accumulated_stop_work);
     }
 
     template <int dim>
@@ -906,7 +1019,7 @@ namespace psmpm
     {
       const double balance = total - accumulated_friction_work -
                              accumulated_prescribed_work -
-                             accumulated_damping_work;
+                             accumulated_damping_work - accumulated_stop_work;
       if (step == 0)
         initial_balance = balance;
       else if (step == 1 && !prescribed.empty())
@@ -925,6 +1038,9 @@ namespace psmpm
       archive.put("boundary_conditions/prescribed_work",
                   accumulated_prescribed_work);
       archive.put("boundary_conditions/damping_work", accumulated_damping_work);
+      if (stop_at_walls)
+        archive.put("boundary_conditions/wall_stop_work",
+                    accumulated_stop_work);
       if (!previous_reactions.empty())
         archive.put("boundary_conditions/previous_reactions",
                     previous_reactions);
@@ -945,6 +1061,10 @@ namespace psmpm
         archive.get_number("boundary_conditions/prescribed_work");
       accumulated_damping_work =
         archive.get_number("boundary_conditions/damping_work");
+      accumulated_stop_work =
+        stop_at_walls ?
+          archive.get_number("boundary_conditions/wall_stop_work") :
+          0.;
       initial_balance =
         archive.get_number("boundary_conditions/initial_balance");
       first_step_offset =

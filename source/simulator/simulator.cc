@@ -333,6 +333,7 @@ namespace psmpm
                                  fixed_names,
                                  mesh_generator,
                                  transfers.scheme->moves_grid());
+      boundary_conditions.check_transfer(transfers.name);
       state.boundary_conditions =
         boundary_conditions.active() ? &boundary_conditions : nullptr;
       contact.check_transfer(transfers.name,

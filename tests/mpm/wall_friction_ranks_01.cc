@@ -7,7 +7,9 @@
 // start, floor mu = 0.5, MUSL) for 0.3 s, linear and Powell-Sabin. A wall
 // DoF whose cells two ranks hold takes its normal force summed over both,
 // so both apply the same friction (and the same hold of a sticking DoF);
-// its force and work are counted once, by the owner.
+// its force and work are counted once, by the owner. The same with
+// Boundary conditions/Stop particles at walls (linear): a constrained
+// DoF's change sums the momenta and masses of both ranks' cells.
 #include "../mpm_tests.h"
 
 #include <filesystem>
@@ -17,13 +19,17 @@ main(int argc, char **argv)
 {
   psmpm::MPISession mpi(argc, argv);
   std::ofstream     out = root_output();
-  for (const std::string basis : {"linear", "powell-sabin"})
+  for (const std::string basis : {"linear", "powell-sabin", "linear stop"})
     {
-      auto solver = make_scene_solver("frictional_slope.prm",
-                                      {"Basis/Type=" + basis,
-                                       "Time/End time=0.3",
-                                       "Output/Interval=0"});
-      const std::string dir = "run-" + basis;
+      const bool stop = basis == "linear stop";
+      auto       solver =
+        make_scene_solver("frictional_slope.prm",
+                          {"Basis/Type=" + std::string(stop ? "linear" : basis),
+                           "Time/End time=0.3",
+                           "Output/Interval=0",
+                           "Boundary conditions/Stop particles at walls=" +
+                             std::string(stop ? "true" : "false")});
+      const std::string dir = "run-" + std::string(stop ? "stop" : basis);
       if (is_root_rank())
         std::filesystem::create_directories(dir);
       MPI_Barrier(MPI_COMM_WORLD);
@@ -42,6 +48,9 @@ main(int argc, char **argv)
                                      "reaction_bottom_y",
                                      "friction_work"})
         out << "  " << name << " " << statistics.column(name).back()
+            << std::endl;
+      if (stop)
+        out << "  wall_stop_work " << statistics.column("wall_stop_work").back()
             << std::endl;
       PSMPM_CHECK(out, statistics.column("friction_work").back() < 0);
     }

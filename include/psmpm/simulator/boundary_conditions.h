@@ -71,8 +71,14 @@ namespace psmpm
       active() const
       {
         return report_reactions || !friction.empty() || !prescribed.empty() ||
-               local_damping > 0;
+               local_damping > 0 || stop_at_walls;
       }
+
+      /// Throws ExcMessage naming Boundary conditions/Stop particles at
+      /// walls if it is on and the transfer @p scheme (Transfer/Scheme)
+      /// is not musl.
+      void
+      check_transfer(const std::string &scheme) const;
 
       /// Boundary parts: relabel the faces of each part with a new
       /// boundary id and give it its name in @p mesh. Right after the mesh
@@ -120,10 +126,29 @@ namespace psmpm
       void
       impose_velocity(State<dim> &state);
 
+      /**
+       * Stop particles at walls (MUSL, after impose_velocity()): the
+       * velocity change with which the constraints of the fixed and
+       * prescribed DoFs set the re-projected grid velocity (lumped: the
+       * momentum over the mass of the DoF's cells) to its constrained
+       * value goes to the particles too, v_p += sum_i N_i(x_p) dv_i, as
+       * the hold of a sticking wall does; the particles' kinetic energy
+       * change is the work wall_stop_work. Nothing when the entry is off.
+       */
+      void
+      stop_particles(State<dim> &state);
+
     private:
       /// The hold's change of the wall DoFs to the particles' velocities.
       void
       hold_particles(State<dim> &state) const;
+
+      /// The constraints' change dv_i of the fixed and prescribed DoFs
+      /// into stop_momentum (from the cell right-hand sides of a momentum
+      /// projection and state.grid_velocity after its solve); whether any
+      /// rank has one.
+      bool
+      stop_change(const State<dim> &state);
 
     public:
       /// Reaction columns (the last step's) and the accumulated work.
@@ -320,6 +345,16 @@ namespace psmpm
       std::vector<bool>   wall_owned;
       std::vector<double> relevant_buffer, owned_buffer;
       bool                sum_over_ranks = false;
+      /// Stop particles at walls: the entry; per component and local
+      /// relevant DoF the momentum and mass sums of the constrained DoFs
+      /// (then the velocity change); the accumulated work (<= 0 at fixed
+      /// walls).
+      bool                                 stop_at_walls = false;
+      std::array<std::vector<double>, dim> stop_momentum, stop_mass;
+      /// Per cell: whether it has a constrained DoF (its particles are
+      /// the ones stop_particles() changes).
+      std::vector<char> stop_cell;
+      double            accumulated_stop_work = 0;
       /// The last step's reactions (the prescribed work's extrapolation;
       /// empty before the first step).
       std::vector<double> previous_reactions;

@@ -46,7 +46,10 @@ namespace psmpm
           if (!this->solve(state, state.grid_velocity, monitor, timer))
             return false;
           if (state.boundary_conditions)
-            state.boundary_conditions->impose_velocity(state);
+            {
+              state.boundary_conditions->impose_velocity(state);
+              state.boundary_conditions->stop_particles(state);
+            }
           if (state.contact)
             state.contact->correct_moving_velocity(state);
           update_particle_state(state, monitor, timer);
