@@ -5,6 +5,8 @@
         [--exe build/psmpm] [--work DIR] [--meshes 4,8,16]
         [--bases linear,powell-sabin] [--cases tresca,tresca-nu45,
         cphi-psi0,cphi-assoc] [--jobs 1] [--reuse] [--no-files]
+        [--body [--width 1] [--end-settlement 0.12]
+         [--set Subsection/Entry=value ...]]
 
 Runs prm/strip_footing.prm (rigid rough footing, B = 1 m, pushed down at
 0.1 m/s into weightless soil; half model) on the criss-cross meshes of
@@ -27,6 +29,21 @@ q_u is the largest window mean (the grid does not follow the footing: the
 load falls once s exceeds about h/2, see doc/geomechanics.md). Prints a
 table and writes doc/data/strip_footing.tsv and doc/images/
 strip_footing.png (q/c against s/B with the reference lines).
+
+With --body the footing is a driven body instead of a mesh boundary:
+prm/strip_footing_body.prm (a criss-cross grid over [0, 5] x [0, 3] m,
+--meshes blocks per m; the footing, Body 2, is the rectangle
+[0, B/2] x [2.5, 2.75] driven down at the same velocity, in no-slip
+contact with the soil). --width B changes the footing's width (the soil
+domain stays); q = -2 contact_force_1_2_y / B. The footing's particles
+move with it, so the run goes on to --end-settlement (0.12 B by default)
+and the table adds the plateau: the mean of q/c over the last 0.02 B of
+settlement (q_end, end_error against the reference), q_end / q_u
+(hold: 1 if the load does not fall after its largest window) and the
+mean of q/c over s = 0.045-0.055 B (q_05). --set
+passes entries to every run (e.g. "Contact/Separation criterion=volume
+fraction"). Files: doc/data/strip_footing_body.tsv and
+doc/images/strip_footing_body.png (--no-files: none).
 
 Needs python3-numpy and python3-matplotlib (Debian).
 """
@@ -77,16 +94,41 @@ def settlement(t):
     return np.where(t < RAMP, V0 * t * t / (2 * RAMP), V0 * (t - RAMP / 2))
 
 
+class Body:
+    """The footing as a driven body (--body): width, end, extra entries;
+    width None: the footing is the mesh boundary (prm/strip_footing.prm)."""
+    width = None
+    end_settlement = 0.12
+    sets = []
+
+    @staticmethod
+    def end_time():
+        """The time at which the settlement is end_settlement * width."""
+        return Body.end_settlement * Body.width / V0 + RAMP / 2
+
+    @staticmethod
+    def entries(blocks):
+        return ['Mesh/Blocks x=%d' % (5 * blocks),
+                'Mesh/Blocks y=%d' % (3 * blocks),
+                'Bodies/Body 2/Corners=0, 2.5, %g, 2.75' % (Body.width / 2),
+                'Time/End time=%g' % Body.end_time()] + Body.sets
+
+
 def run(exe, work, basis, blocks, case, reuse):
     tag = '%s-%d-%s' % (basis, blocks, case)
     d = os.path.join(work, tag)
     mesh = os.path.join(work, 'strip_footing_%d.msh' % blocks)
     if not (reuse and os.path.exists(os.path.join(d, 'summary.json'))):
-        sets = ['Output directory=' + d, 'Mesh/File=' + mesh,
-                'Basis/Type=' + basis, 'Time/End time=%g' % END_TIME,
+        sets = ['Output directory=' + d, 'Basis/Type=' + basis,
                 'Transfer/Scheme=' + ('apic' if basis == 'powell-sabin'
                                       else 'musl')] + CASES[case][1]
-        args = [exe, os.path.join(ROOT, 'prm', 'strip_footing.prm')]
+        if Body.width is None:
+            sets += ['Mesh/File=' + mesh, 'Time/End time=%g' % END_TIME]
+            scene = 'strip_footing.prm'
+        else:
+            sets += Body.entries(blocks)
+            scene = 'strip_footing_body.prm'
+        args = [exe, os.path.join(ROOT, 'prm', scene)]
         for s in sets:
             args += ['--set', s]
         p = subprocess.run(args, capture_output=True, text=True)
@@ -107,8 +149,12 @@ def evaluate(d, basis, blocks, case):
         summary = json.load(open(path))
     s = statistics(os.path.join(d, 'statistics.txt'))
     t = s['time']
-    q = -2 * s['reaction_footing_y'] / B / C
-    sb = settlement(t) / B
+    width = B if Body.width is None else Body.width
+    load = s['reaction_footing_y' if Body.width is None else
+             'contact_force_1_2_y']
+    work = s['prescribed_work' if Body.width is None else 'driven_work']
+    q = -2 * load / width / C
+    sb = settlement(t) / width
     # Window means of q over settlement windows of WINDOW B, sliding by
     # WINDOW / 4.
     best, at = -np.inf, 0.0
@@ -121,15 +167,21 @@ def evaluate(d, basis, blocks, case):
     ref = CASES[case][0]
     floor = s['reaction_bottom_y']
     late = sb > 0.02
+    end = sb > sb[-1] - 0.02
+    mid = (sb >= 0.045) & (sb < 0.055)
     return {
         'basis': basis, 'blocks': blocks, 'case': case,
         'status': summary['status'], 'h': 1.0 / blocks,
-        'under': blocks // 2, 'particles': summary['n_particles'],
+        'under': int(round(blocks * width / 2)),
+        'particles': summary['n_particles'],
         'qu': best, 'ref': ref, 'error': best / ref - 1, 'at': at,
         # Global equilibrium: footing load against the floor's reaction.
-        'balance': np.mean(floor[late]) / -np.mean(s['reaction_footing_y'][
-            late]) - 1 if late.any() else np.nan,
-        'ke_over_w': s['kinetic_energy'].max() / s['prescribed_work'][-1],
+        'balance': np.mean(floor[late]) / -np.mean(load[late]) - 1
+        if late.any() else np.nan,
+        'q_05': np.mean(q[mid]) if mid.any() else np.nan,
+        'q_end': np.mean(q[end]), 'hold': np.mean(q[end]) / best,
+        'end_error': np.mean(q[end]) / ref - 1,
+        'ke_over_w': s['kinetic_energy'].max() / work[-1],
         'cpu_s': summary['cpu_time_s'], 'wall_s': summary['wall_time_s'],
         'steps': summary['steps'], 's': sb, 'q': q,
     }
@@ -155,11 +207,29 @@ def main():
                     'running them again')
     ap.add_argument('--no-files', action='store_true',
                     help='print only; do not write doc/data, doc/images')
+    ap.add_argument('--body', action='store_true',
+                    help='the footing as a driven body '
+                    '(prm/strip_footing_body.prm)')
+    ap.add_argument('--width', type=float, default=B,
+                    help='--body: the footing width B in m')
+    ap.add_argument('--end-settlement', type=float,
+                    default=Body.end_settlement,
+                    help='--body: the last settlement / B')
+    ap.add_argument('--set', action='append', default=[],
+                    help='--body: an entry for every run')
     args = ap.parse_args()
+    columns, name, end = COLUMNS, 'strip_footing', END_TIME
+    if args.body:
+        Body.width, Body.end_settlement = args.width, args.end_settlement
+        Body.sets = args.set
+        columns = COLUMNS[:7] + [('q_05', '%.3f'), ('q_end', '%.3f'),
+                                 ('end_error', '%+.3f'),
+                                 ('hold', '%.3f')] + COLUMNS[7:]
+        name, end = 'strip_footing_body', Body.end_time()
     work = os.path.abspath(args.work)
     os.makedirs(work, exist_ok=True)
     meshes = [int(m) for m in args.meshes.split(',')]
-    for m in meshes:
+    for m in meshes if not args.body else []:
         make_strip_footing_mesh.write_mesh(
             os.path.join(work, 'strip_footing_%d.msh' % m), m)
     jobs = [(b, m, c) for c in args.cases.split(',')
@@ -169,11 +239,11 @@ def main():
                    for b, m, c in jobs]
         results = [f.result() for f in futures]
 
-    header = ['case', 'basis', 'blocks_per_m'] + [c for c, _ in COLUMNS]
+    header = ['case', 'basis', 'blocks_per_m'] + [c for c, _ in columns]
     lines = ['\t'.join(header)]
     for r in results:
         lines.append('\t'.join([r['case'], r['basis'], '%d' % r['blocks']] +
-                               [f % r[c] for c, f in COLUMNS]))
+                               [f % r[c] for c, f in columns]))
     print('# q_u/c: largest mean of q/c over %g B of settlement; error = '
           'q_u / reference - 1; at: its settlement / B; balance: floor '
           'reaction / footing load - 1 (s > 0.02 B); ke_over_w: largest '
@@ -182,11 +252,14 @@ def main():
     if args.no_files:
         return
     os.makedirs(os.path.join(ROOT, 'doc', 'data'), exist_ok=True)
-    with open(os.path.join(ROOT, 'doc', 'data', 'strip_footing.tsv'),
+    with open(os.path.join(ROOT, 'doc', 'data', name + '.tsv'),
               'w') as f:
-        f.write('# contrib/geomechanics/strip_footing_study.py: '
-                'prm/strip_footing.prm, settlement to %g B\n'
-                % settlement(np.array([END_TIME]))[0])
+        f.write('# contrib/geomechanics/strip_footing_study.py%s: '
+                'prm/%s.prm, settlement to %g B\n'
+                % (' --body --width %g' % Body.width + ''.join(
+                    ' --set "%s"' % e for e in Body.sets) if args.body
+                   else '', name,
+                   settlement(np.array([end]))[0] / (Body.width or B)))
         f.write('\n'.join(lines) + '\n')
 
     import matplotlib
@@ -216,7 +289,7 @@ def main():
     axes[0][0].legend(loc='lower right', fontsize='small')
     fig.tight_layout()
     os.makedirs(os.path.join(ROOT, 'doc', 'images'), exist_ok=True)
-    fig.savefig(os.path.join(ROOT, 'doc', 'images', 'strip_footing.png'),
+    fig.savefig(os.path.join(ROOT, 'doc', 'images', name + '.png'),
                 dpi=110)
 
 

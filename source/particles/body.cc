@@ -364,12 +364,49 @@ namespace psmpm
                             "Initial velocity as a function of x, y, one "
                             "component per dimension separated by ';', with "
                             "Initial conditions/Function constants.");
+          prm.declare_entry(
+            "Motion",
+            "free",
+            Patterns::Selection("free|prescribed"),
+            "'free': the body moves as the equations of motion say. "
+            "'prescribed': a driven rigid body, every particle moves with "
+            "Velocity, a function of the time (no strain, its stress stays "
+            "the initial one); it acts on the other bodies through "
+            "Contact/Type = multi-velocity as a body of infinite mass "
+            "(doc/contact.md, \"Driven bodies\").");
+          prm.declare_entry(
+            "Velocity",
+            "0; 0",
+            Patterns::Anything(),
+            "Motion = prescribed: the body's velocity as a function of the "
+            "time t, one expression per component separated by ';' (as "
+            "Boundary conditions/Prescribed velocity): e.g. '0; "
+            "-0.1*min(t/0.1, 1)'. Start it smoothly from Initial velocity.");
           prm.leave_subsection();
         }
       prm.leave_subsection();
     }
 
 
+
+    namespace
+    {
+      /// The entries of subsection Bodies/Body k beside its shape.
+      void
+      read_material_and_motion(ParameterHandler &prm, Body &body)
+      {
+        body.material = prm.get_integer("Material");
+        body.density  = prm.get_double("Density");
+        AssertThrow(body.density >= 0 && std::isfinite(body.density),
+                    ExcMessage(body.name() +
+                               "/Density = " + prm_value(body.density) +
+                               ": must be positive (0: the density of its "
+                               "material)."));
+        body.velocity          = prm.get("Initial velocity");
+        body.prescribed_motion = prm.get("Motion") == "prescribed";
+        body.motion_velocity   = prm.get("Velocity");
+      }
+    } // namespace
 
     void
     Bodies::parse_parameters(ParameterHandler &prm)
@@ -459,13 +496,7 @@ namespace psmpm
                           ExcMessage(name + "/Vertices = " + list(v) +
                                      ": the polygon has no area."));
             }
-          body.material = prm.get_integer("Material");
-          body.density  = prm.get_double("Density");
-          AssertThrow(
-            body.density >= 0 && std::isfinite(body.density),
-            ExcMessage(name + "/Density = " + prm_value(body.density) +
-                       ": must be positive (0: the density of its material)."));
-          body.velocity = prm.get("Initial velocity");
+          read_material_and_motion(prm, body);
           prm.leave_subsection();
           bodies.push_back(body);
         }

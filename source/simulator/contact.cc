@@ -85,9 +85,12 @@ namespace psmpm
     {
       const Tensor<1, dim> w   = v_a - v_b;
       const double         w_n = w * normal;
-      if (!(w_n > 0))
+      if (!(w_n > 0) || (std::isinf(m_a) && std::isinf(m_b)))
         return false;
-      const double         m        = m_a * m_b / (m_a + m_b);
+      // A driven body's infinite mass: the other's is the reduced one.
+      const double         m        = std::isinf(m_a) ? m_b :
+                                      std::isinf(m_b) ? m_a :
+                                                        m_a * m_b / (m_a + m_b);
       const Tensor<1, dim> w_t      = w - w_n * normal;
       const double         w_t_norm = w_t.norm();
       // The tangential relative velocity keeps the fraction 1 - s of
@@ -324,7 +327,9 @@ namespace psmpm
       std::vector<ContactPairStatistics<dim>> &statistics,
       const bool                               with_friction) const
     {
-      const unsigned int n = fields.n_bodies;
+      const unsigned int n           = fields.n_bodies;
+      constexpr double   infinite    = std::numeric_limits<double>::infinity();
+      const bool         with_driven = !driven.empty();
       for (unsigned int a = 0; a < n; ++a)
         {
           const unsigned int ia = i * n + a;
@@ -333,7 +338,8 @@ namespace psmpm
           for (unsigned int b = a + 1; b < n; ++b)
             {
               const unsigned int ib = i * n + b;
-              if (!(fields.mass[ib] > 0))
+              if (!(fields.mass[ib] > 0) ||
+                  (with_driven && driven[a] && driven[b]))
                 continue;
               const Tensor<1, dim> normal =
                 pair_normal(fields.mass_gradient[ia],
@@ -353,8 +359,10 @@ namespace psmpm
                   if ((w - w_n * normal).norm() <= mu * w_n)
                     fields.stuck[ia] = fields.stuck[ib] = 1;
                 }
-              correct_pair(fields.mass[ia],
-                           fields.mass[ib],
+              correct_pair(with_driven && driven[a] ? infinite :
+                                                      fields.mass[ia],
+                           with_driven && driven[b] ? infinite :
+                                                      fields.mass[ib],
                            fields.velocity[ia],
                            fields.velocity[ib],
                            normal,
@@ -376,6 +384,10 @@ namespace psmpm
                              " bodies, the scene " + std::to_string(n_bodies) +
                              "."));
       const unsigned int n_nodes = fields.n_nodes();
+      AssertThrow(driven.empty() || driven.size() == n_bodies,
+                  ExcMessage(
+                    "Contact::driven names " + std::to_string(driven.size()) +
+                    " bodies, the scene " + std::to_string(n_bodies) + "."));
       Assert(criterion != SeparationCriterion::volume_fraction ||
                (fields.volume.size() == fields.mass.size() &&
                 fields.node_volume.size() == n_nodes),

@@ -41,7 +41,10 @@ namespace psmpm
                                                 const bool  fit)
     {
       if (!any_contact)
-        return;
+        {
+          driven_bodies.set_velocities(state, true, affine_points, true);
+          return;
+        }
       auto               &particles = state.particles;
       const unsigned int  n         = state.grid->dofs_per_cell;
       const unsigned int *dofs      = state.grid->cell_dofs().data();
@@ -80,6 +83,7 @@ namespace psmpm
               (phi[k] * m) *
               (dv + dC * (affine_points[dofs[cell * n + k]] - x));
         }
+      driven_bodies.set_velocities(state, true, affine_points, true);
     }
 
     template <int dim>
@@ -92,8 +96,29 @@ namespace psmpm
                                       const bool        gradient,
                                       const bool        rotation) const
     {
-      if (moving_increment.empty())
-        return;
+      if (!moving_increment.empty())
+        move_near_contact(state,
+                          first,
+                          last,
+                          increments,
+                          positions,
+                          gradient,
+                          rotation);
+      // The driven particles' own motion, whatever the grid gave them.
+      if (driven_bodies.any())
+        driven_bodies.move(state, first, last, increments);
+    }
+
+    template <int dim>
+    void
+    ContactCoupling<dim>::move_near_contact(State<dim>       &state,
+                                            const std::size_t first,
+                                            const std::size_t last,
+                                            Tensor<2, dim>   *increments,
+                                            const bool        positions,
+                                            const bool        gradient,
+                                            const bool        rotation) const
+    {
       auto               &particles = state.particles;
       const unsigned int  n         = state.grid->dofs_per_cell;
       const unsigned int *dofs      = state.grid->cell_dofs().data();
@@ -142,7 +167,14 @@ namespace psmpm
                                                   Tensor<2, DIM> *,          \
                                                   const bool,                \
                                                   const bool,                \
-                                                  const bool) const;
+                                                  const bool) const;         \
+  template void ContactCoupling<DIM>::move_near_contact(State<DIM> &,        \
+                                                        const std::size_t,   \
+                                                        const std::size_t,   \
+                                                        Tensor<2, DIM> *,    \
+                                                        const bool,          \
+                                                        const bool,          \
+                                                        const bool) const;
     PSMPM_INSTANTIATE(1)
     PSMPM_INSTANTIATE(2)
     // clang-format on

@@ -90,6 +90,52 @@ namespace psmpm
 
     template <int dim>
     void
+    ContactCoupling<dim>::parse_driven(
+      const std::vector<Particles::Body> &bodies)
+    {
+      driven_bodies.parse(bodies, contact.enabled());
+      contact.driven.clear();
+      if (driven_bodies.any())
+        contact.driven = driven_bodies.flags();
+    }
+
+    template <int dim>
+    void
+    ContactCoupling<dim>::set_driven_fields()
+    {
+      if (!driven_bodies.any())
+        return;
+      for (unsigned int i = 0; i < contact_dofs.size(); ++i)
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          if (contact.driven[b] && fields.mass[i * n_bodies + b] > 0)
+            fields.velocity[i * n_bodies + b] = driven_bodies.new_velocity(b);
+    }
+
+    template <int dim>
+    void
+    ContactCoupling<dim>::add_driven_work()
+    {
+      double work = driven_bodies.kinetic_energy_change();
+      if (n_ranks > 1)
+        work = Utilities::MPI::sum(work, comm);
+      if (any_contact)
+        for (unsigned int a = 0; a < n_bodies; ++a)
+          for (unsigned int b = a + 1; b < n_bodies; ++b)
+            {
+              // The impulse on a is J, on b -J (pair statistics).
+              const Tensor<1, dim> &J =
+                step_statistics[Contact<dim>::pair_index(a, b, n_bodies)]
+                  .impulse;
+              if (contact.driven[b])
+                work += J * driven_bodies.new_velocity(b);
+              else if (contact.driven[a])
+                work -= J * driven_bodies.new_velocity(a);
+            }
+      accumulated_driven_work += work;
+    }
+
+    template <int dim>
+    void
     ContactCoupling<dim>::choose_automatic(ParameterHandler &prm,
                                            std::string      &mass_type)
     {
@@ -405,9 +451,14 @@ namespace psmpm
       std::fill(normal_force.begin(), normal_force.end(), 0.);
       std::fill(friction_force.begin(), friction_force.end(), 0.);
       moving_increment.clear();
+      driven_bodies.start_step(state);
       any_contact = find_contact_dofs(state) > 0;
       if (!any_contact)
-        return;
+        {
+          if (driven_bodies.any())
+            add_driven_work();
+          return;
+        }
       particles_to_contact_dofs(state);
       const unsigned int n_contact = contact_dofs.size();
       const bool         volumes =
@@ -462,6 +513,7 @@ namespace psmpm
             }
         }
       vertex_gradients();
+      set_driven_fields();
       correction_direction = fields.velocity;
       fields.stuck.assign(n_contact * n_bodies, 0);
       apply_correction();
@@ -485,6 +537,8 @@ namespace psmpm
           normal_work[q] += step_statistics[q].normal_work;
           slip_work[q] += step_statistics[q].slip_work;
         }
+      if (driven_bodies.any())
+        add_driven_work();
     }
 
     template <int dim>
@@ -493,7 +547,10 @@ namespace psmpm
                                                   const bool  momentum_to_grid)
     {
       if (!any_contact)
-        return;
+        {
+          driven_bodies.set_velocities(state, false, nullptr, momentum_to_grid);
+          return;
+        }
       auto               &particles = state.particles;
       const unsigned int  n         = state.grid->dofs_per_cell;
       const unsigned int *dofs      = state.grid->cell_dofs().data();
@@ -528,6 +585,7 @@ namespace psmpm
             for (unsigned int k = 0; k < n; ++k)
               rhs[cell * n + k] += (phi[k] * particles.mass[p]) * dv;
         }
+      driven_bodies.set_velocities(state, false, nullptr, momentum_to_grid);
     }
 
     template <int dim>
@@ -595,6 +653,7 @@ namespace psmpm
       // its impulse is no force on them (their velocities stay): normal
       // part alone, statistics dropped, so that friction does not slow a
       // sliding body's positions a second time.
+      set_driven_fields();
       contact.apply(fields, scratch, nullptr, false);
       for (unsigned int ib = 0; ib < n_contact * n_bodies; ++ib)
         if (fields.mass[ib] > 0)
@@ -635,6 +694,8 @@ namespace psmpm
             names.push_back("normal_work_" + pair);
             names.push_back("slip_work_" + pair);
           }
+      if (driven_bodies.any())
+        names.push_back("driven_work");
       return names;
     }
 
@@ -654,6 +715,8 @@ namespace psmpm
           values.push_back(normal_work[q]);
           values.push_back(slip_work[q]);
         }
+      if (driven_bodies.any())
+        values.push_back(accumulated_driven_work);
       for (unsigned int c = 0; c < names.size(); ++c)
         table.add_value(names[c], values[c]);
     }
@@ -677,6 +740,9 @@ namespace psmpm
       archive.put("contact/friction_work", friction_work);
       archive.put("contact/normal_work", normal_work);
       archive.put("contact/slip_work", slip_work);
+      if (driven_bodies.any())
+        archive.put("contact/driven_work",
+                    std::vector<double>{accumulated_driven_work});
     }
 
     template <int dim>
@@ -689,6 +755,8 @@ namespace psmpm
         archive.get("contact/friction_work", friction_work.size());
       normal_work = archive.get("contact/normal_work", normal_work.size());
       slip_work   = archive.get("contact/slip_work", slip_work.size());
+      if (driven_bodies.any())
+        accumulated_driven_work = archive.get("contact/driven_work", 1)[0];
     }
 
     template class ContactCoupling<1>;

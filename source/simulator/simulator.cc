@@ -203,6 +203,7 @@ namespace psmpm
       for (auto &body : particle_generator.bodies.bodies)
         body.density = state.materials.of_body(body.number).density;
       contact.parse_parameters(prm, particle_generator.bodies.bodies.size());
+      contact.parse_driven(particle_generator.bodies.bodies);
       discretisation.parse_parameters(prm);
       contact.choose_automatic(prm, discretisation.grid_parameters.type);
       // "automatic" takes the space's measured defaults; the choice for a
@@ -563,7 +564,8 @@ namespace psmpm
         {
           contact.add_columns(statistics);
           // Friction of sliding contact dissipates: no loss to report.
-          total_energy -= contact.sliding_work();
+          // A driven body's work is external.
+          total_energy -= contact.sliding_work() + contact.driven_work();
         }
       statistics.add_value("wall_time", record.wall_offset + wall_time);
       // A row with inf or nan (an error norm against a reference beyond
@@ -681,8 +683,8 @@ namespace psmpm
       if (!time_step_control.warning().empty())
         pcout << "psmpm: warning: " << time_step_control.warning() << std::endl;
       if (!contact.note().empty())
-        pcout << "psmpm: " << contact.note() << ", Transfer/Scheme = "
-              << transfers.name << std::endl;
+        pcout << "psmpm: " << contact.note()
+              << ", Transfer/Scheme = " << transfers.name << std::endl;
       pcout << "psmpm: " << state.space->name() << " basis, "
             << discretisation.n_functions << " DoFs, "
             << Utilities::MPI::sum(state.particles.size(), comm)

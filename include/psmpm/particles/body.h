@@ -110,6 +110,11 @@ namespace psmpm
       /// Initial velocity, one expression per component separated by ';',
       /// in x, y with Initial conditions/Function constants.
       std::string velocity;
+      /// Motion = prescribed: a driven (rigid) body whose particles move
+      /// with the velocity @p motion_velocity, one function of t per
+      /// component separated by ';' (Simulator::DrivenBodies).
+      bool        prescribed_motion = false;
+      std::string motion_velocity;
     };
 
     /**

@@ -107,6 +107,12 @@ namespace psmpm
      * mu = 0: frictionless). Returns whether the pair was corrected.
      * Momentum is conserved exactly (J and -J), and the kinetic energy
      * changes by -m/2 (w.n)^2 - m/2 (|w_t|^2 - |w_t'|^2) <= 0.
+     *
+     * A driven body (Bodies/Body k/Motion = prescribed) enters with an
+     * infinite mass: then m is the other body's mass, the driven velocity
+     * does not change (J / infinity = 0) and the other body alone takes
+     * the correction (v_cm is the driven velocity); the energies are
+     * those of the driven body's frame. Both infinite: no correction.
      */
     template <int dim>
     bool
@@ -218,6 +224,12 @@ namespace psmpm
             std::vector<ContactPairStatistics<dim>> &statistics,
             const std::vector<char>                 *counted,
             const bool with_friction = true) const;
+
+      /// Per body (0-based), 1 for a driven body (Bodies/Body k/Motion =
+      /// prescribed): infinite mass in correct_pair(), pairs of two
+      /// driven bodies skipped. Empty: none. The caller sets the driven
+      /// velocity into the fields before apply().
+      std::vector<char> driven;
 
       NormalType          normal_type = NormalType::average;
       SeparationCriterion criterion   = SeparationCriterion::volume_fraction;

@@ -10,6 +10,7 @@
 #include <psmpm/base/archive.h>
 #include <psmpm/postprocess/statistics_table.h>
 #include <psmpm/simulator/contact.h>
+#include <psmpm/simulator/driven_bodies.h>
 #include <psmpm/simulator/state.h>
 
 #include <string>
@@ -56,6 +57,11 @@ namespace psmpm
       /// bodies (Bodies/Number of bodies).
       void
       parse_parameters(ParameterHandler &prm, const unsigned int n_bodies);
+
+      /// The driven bodies of the scene (Bodies/Body k/Motion =
+      /// prescribed), after parse_parameters(); errors name the entry.
+      void
+      parse_driven(const std::vector<Particles::Body> &bodies);
 
       bool
       enabled() const
@@ -127,7 +133,9 @@ namespace psmpm
 
       /// v_p += sum_i dv_bi N_i(x_p) for the particles near contact DoFs;
       /// with @p momentum_to_grid their momentum change goes into the
-      /// cell right-hand sides too (MUSL's second projection).
+      /// cell right-hand sides too (MUSL's second projection). Driven
+      /// bodies' particles then take their velocity
+      /// (DrivenBodies::set_velocities; so does add_affine_increments()).
       void
       add_velocity_increments(State<dim> &state, const bool momentum_to_grid);
 
@@ -151,7 +159,9 @@ namespace psmpm
       /// move() for apic: positions only if @p positions (apic moves with
       /// v_p, which carries the body's field already), and the affine
       /// matrices of apic's velocity-gradient (@p gradient) or rotation
-      /// (@p rotation) mode from the body's velocity gradient.
+      /// (@p rotation) mode from the body's velocity gradient. Then, with
+      /// driven bodies, their particles' own motion (DrivenBodies::move),
+      /// for both schemes.
       void
       move_affine(State<dim>       &state,
                   const std::size_t first,
@@ -177,6 +187,17 @@ namespace psmpm
       double
       sliding_work() const;
 
+      /// The work the driven bodies did on the others since the start
+      /// (the contact force on them times the driven velocity, summed
+      /// over the steps) plus the change of their own kinetic energy: the
+      /// external work in the stability monitor's balance (0 without
+      /// driven bodies).
+      double
+      driven_work() const
+      {
+        return accumulated_driven_work;
+      }
+
       /// The columns above, summed over the ranks (collective).
       void
       add_columns(Postprocess::StatisticsTable &table) const;
@@ -190,7 +211,25 @@ namespace psmpm
       /// The parameters and the nodal algorithm.
       Contact<dim> contact;
 
+      /// The bodies moved with a prescribed velocity (none by default).
+      DrivenBodies<dim> driven_bodies;
+
     private:
+      /// The driven bodies' velocities v(t^{n+1}) into their fields at
+      /// the contact DoFs.
+      void
+      set_driven_fields();
+
+      /// move_affine() of the particles near contact DoFs.
+      void
+      move_near_contact(State<dim>       &state,
+                        const std::size_t first,
+                        const std::size_t last,
+                        Tensor<2, dim>   *increments,
+                        const bool        positions,
+                        const bool        gradient,
+                        const bool        rotation) const;
+
       /// Per step: the contact DoFs (contact_dofs, dof_index), the cells
       /// touching them and the particles in those cells. Returns the
       /// number of contact DoFs over all ranks.
@@ -269,6 +308,14 @@ namespace psmpm
       /// momenta of affine fields; nullptr: MUSL's m_p v_p.
       const Point<dim> *affine_points = nullptr;
       std::string       automatic_note;
+      /// driven_work(), and its part of the step (add_driven_work()).
+      double accumulated_driven_work = 0;
+
+      /// The step's work of the driven bodies into
+      /// accumulated_driven_work (collective).
+      void
+      add_driven_work();
+
       /// Whether any rank has contact DoFs in this step.
       bool         any_contact = false;
       MPI_Comm     comm        = MPI_COMM_SELF;
