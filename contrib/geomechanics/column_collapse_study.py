@@ -21,8 +21,11 @@ columns:
   (d_inf - d0) / d0 = 3.25 a^0.96    (0.65 < a < 1.5), 3.80 a^0.73 (a > 1.5)
 From the last particle output also h_wall (the highest particle within
 one cell of the wall: equal to body1_y_max unless a particle was thrown
-up) and V/V0 (the particles' total volume over the initial one: the
-deposit's dilation). --floor takes a friction coefficient (1e6: a rough
+up), V/V0 (the particles' total volume over the initial one: the
+deposit's dilation) and the deposit's front d_front: the particles
+sorted by x, the last one before the first gap of more than one cell
+width (the particles beyond it, a few thrown ahead of the deposit and
+counted as n_ahead, set body1_x_max alone). --floor takes a friction coefficient (1e6: a rough
 floor that sticks wherever it pushes), no-slip or frictionless.
 Writes column_collapse.tsv and column_collapse.png into the work
 directory (copy them to doc/data/ and doc/images/), prints the table with
@@ -108,7 +111,10 @@ def deposit(out, h):
     p = vtu_arrays(os.path.join(out, last))
     initial = sum(v / r for v, r in zip(p["volume"], p["volume_ratio"]))
     at_wall = [pt[1] for pt in p["Points"] if pt[0] < h]
-    return sum(p["volume"]) / initial, max(at_wall) if at_wall else float("nan")
+    xs = sorted(pt[0] for pt in p["Points"])
+    gap = next((i for i in range(len(xs) - 1) if xs[i + 1] - xs[i] > h), len(xs) - 1)
+    return (sum(p["volume"]) / initial, max(at_wall) if at_wall else float("nan"),
+            xs[gap], len(xs) - 1 - gap)
 
 
 def run(a, basis):
@@ -142,7 +148,7 @@ def run(a, basis):
     if result.returncode != 0:
         print(f"a = {a} {basis}: exit {result.returncode}: {summary.get('reason', '')}", file=sys.stderr)
     first, row = first_and_last_rows(os.path.join(out, "statistics.txt"))
-    volume, wall_height = deposit(out, h)
+    volume, wall_height, front, ahead = deposit(out, h)
     released = -row["gravity_energy"] if row["gravity_energy"] < 0 else float("nan")
     # What is conserved: total (kinetic + strain + gravity + dissipated)
     # minus the floor's friction work.
@@ -152,6 +158,7 @@ def run(a, basis):
         "h_ratio": row["body1_y_max"] / h0,
         "h_wall": wall_height / h0, "volume": volume,
         "runout": (row["body1_x_max"] - d0) / d0,
+        "front": (front - d0) / d0, "ahead": ahead,
         "kinetic_fraction": row["kinetic_energy"] / released if released > 0 else float("nan"),
         "energy_error": balance / released if released > 0 else float("nan"),
         "cpu": summary.get("cpu_time_s", float("nan")), "wall": wall,
@@ -168,20 +175,23 @@ for a in [float(x) for x in args.ratios.split(",")]:
         print(f"a {a:4.2f} {basis:13s} h_inf/h0 {r['h_ratio']:.3f} (law {law_height(a):.3f})"
               f"  (d_inf-d0)/d0 {r['runout']:.3f}"
               f" (law {law_runout(a) if law_runout(a) is not None else float('nan'):.3f})"
+              f"  front {r['front']:.3f} ({r['ahead']} ahead)"
               f"  h_wall/h0 {r['h_wall']:.3f} V/V0 {r['volume']:.2f}"
               f"  Ek/released {r['kinetic_fraction']:.1e} energy {r['energy_error']:+.1e}  CPU {r['cpu']:.1f} s wall {r['wall']:.1f} s"
               f"  {r['status']}", flush=True)
 
 with open(os.path.join(work, "column_collapse.tsv"), "w") as f:
     f.write("a\tbasis\th_inf/h0\tlaw\terror\t(d_inf-d0)/d0\tlaw\terror\tEk/released\t"
-            "energy_error\tcpu_s\twall_s\tparticles\tsteps\tstatus\th_wall/h0\tV/V0\n")
+            "energy_error\tcpu_s\twall_s\tparticles\tsteps\tstatus\th_wall/h0\tV/V0\t"
+            "(d_front-d0)/d0\terror\tn_ahead\n")
     for r in rows:
         lh, lr = law_height(r["a"]), law_runout(r["a"])
         f.write(f"{r['a']}\t{r['basis']}\t{r['h_ratio']:.4f}\t{lh:.4f}\t{r['h_ratio'] / lh - 1:+.3f}\t"
                 f"{r['runout']:.4f}\t{lr if lr is not None else 'nan'}\t"
                 f"{(r['runout'] / lr - 1) if lr else float('nan'):+.3f}\t{r['kinetic_fraction']:.2e}\t"
                 f"{r['energy_error']:.2e}\t{r['cpu']:.2f}\t{r['wall']:.2f}\t{r['particles']}\t"
-                f"{r['steps']}\t{r['status']}\t{r['h_wall']:.4f}\t{r['volume']:.3f}\n")
+                f"{r['steps']}\t{r['status']}\t{r['h_wall']:.4f}\t{r['volume']:.3f}\t"
+                f"{r['front']:.4f}\t{(r['front'] / lr - 1) if lr else float('nan'):+.3f}\t{r['ahead']}\n")
 
 fig, axes = plt.subplots(1, 2, figsize=(10, 4))
 ax = [x / 100 for x in range(30, 460)]
@@ -194,6 +204,8 @@ for basis, marker in (("linear", "o"), ("powell-sabin", "s")):
     sel = [r for r in rows if r["basis"] == basis and r["status"] == "completed"]
     axes[0].plot([r["a"] for r in sel], [1 / r["h_ratio"] for r in sel], marker, label=basis)
     axes[1].plot([r["a"] for r in sel], [r["runout"] for r in sel], marker, label=basis)
+    axes[1].plot([r["a"] for r in sel], [r["front"] for r in sel], marker, mfc="none",
+                 label=basis + ", deposit front")
 axes[0].set_xlabel("a = h0/d0")
 axes[0].set_ylabel("h0 / h_inf")
 axes[1].set_xlabel("a = h0/d0")

@@ -365,12 +365,22 @@ namespace psmpm
                                double                  *state,
                                double                  *volume_ratio) const
     {
-      this->update_with(DruckerPragerReturn<dim>{*this},
-                        n,
-                        dL,
-                        stress,
-                        state,
-                        volume_ratio);
+      // Two loops, chosen once per batch: the one without the option
+      // compiles as if the option did not exist.
+      if (this->recoverable_apex_dilation)
+        this->update_with_recoverable(DruckerPragerReturn<dim>{*this},
+                                      n,
+                                      dL,
+                                      stress,
+                                      state,
+                                      volume_ratio);
+      else
+        this->update_with(DruckerPragerReturn<dim>{*this},
+                          n,
+                          dL,
+                          stress,
+                          state,
+                          volume_ratio);
     }
 
 

@@ -98,6 +98,20 @@ namespace psmpm
                         "(the disconnected state of Dunatunga and Kamrin, "
                         "J. Fluid Mech. 779, 2015). 'none': never "
                         "(doc/geomechanics.md, granular column collapse).");
+      prm.declare_entry(
+        "Apex dilation",
+        "permanent",
+        Patterns::Selection("permanent|recoverable"),
+        "mohr-coulomb, drucker-prager with Cohesion = 0: what becomes of the "
+        "volume a return to the apex (zero stress) adds. permanent: plastic "
+        "for good; compressed again, the particle takes the dense "
+        "material's stress at once. recoverable: it is a gap between grains "
+        "out of contact (Dunatunga and Kamrin, J. Fluid Mech. 779, 2015), "
+        "kept per particle (state column apex_dilation): while it is open "
+        "the particle carries no stress and its strain is plastic; "
+        "compression closes it first, and only the strain after that "
+        "loads the particle (doc/geomechanics.md, granular column "
+        "collapse).");
     }
 
 
@@ -126,6 +140,22 @@ namespace psmpm
         parse_optional(prm.get("Disconnected volume ratio"),
                        p + "/Disconnected volume ratio",
                        HUGE_VAL);
+      recoverable_apex_dilation = prm.get("Apex dilation") == "recoverable";
+      AssertThrow(
+        !recoverable_apex_dilation || (cohesion == 0 && residual_cohesion == 0),
+        ExcMessage(p + "/Apex dilation = recoverable with " + p +
+                   "/Cohesion = " + prm_value(cohesion) +
+                   " (Residual cohesion = " + prm_value(residual_cohesion) +
+                   "): a gap between grains needs a cohesionless "
+                   "material, whose apex is at zero stress "
+                   "(Cohesion = 0, Residual cohesion = 0)."));
+      AssertThrow(!recoverable_apex_dilation ||
+                    disconnected_volume_ratio == HUGE_VAL,
+                  ExcMessage(p + "/Apex dilation = recoverable with " + p +
+                             "/Disconnected volume ratio = " +
+                             prm_value(disconnected_volume_ratio) +
+                             ": the gap replaces the fixed volume ratio; "
+                             "set Disconnected volume ratio = none."));
       AssertThrow(disconnected_volume_ratio > 1,
                   ExcMessage(p + "/Disconnected volume ratio = " +
                              prm_value(disconnected_volume_ratio) +
@@ -195,22 +225,28 @@ namespace psmpm
     std::vector<std::string>
     PlasticHypoelastic<dim>::state_names() const
     {
+      std::vector<std::string> names;
       if constexpr (dim == 1)
-        return {"stress_lateral",
-                "plastic_strain_xx",
-                "plastic_strain_lateral",
-                "equivalent_plastic_strain",
-                "plastic_work",
-                "volume_ratio"};
+        names = {"stress_lateral",
+                 "plastic_strain_xx",
+                 "plastic_strain_lateral",
+                 "equivalent_plastic_strain",
+                 "plastic_work",
+                 "volume_ratio"};
       else
-        return {"stress_zz",
-                "plastic_strain_xx",
-                "plastic_strain_yy",
-                "plastic_strain_xy",
-                "plastic_strain_zz",
-                "equivalent_plastic_strain",
-                "plastic_work",
-                "volume_ratio"};
+        names = {"stress_zz",
+                 "plastic_strain_xx",
+                 "plastic_strain_yy",
+                 "plastic_strain_xy",
+                 "plastic_strain_zz",
+                 "equivalent_plastic_strain",
+                 "plastic_work",
+                 "volume_ratio"};
+      // Only with the option, so that the outputs without it keep their
+      // columns.
+      if (recoverable_apex_dilation)
+        names.emplace_back("apex_dilation");
+      return names;
     }
 
 

@@ -50,6 +50,25 @@ namespace psmpm
      * [J/kg]; volume_ratio: J = V / V_0). 1D: {"stress_lateral",
      * "plastic_strain_xx", "plastic_strain_lateral",
      * "equivalent_plastic_strain", "plastic_work", "volume_ratio"}.
+     * With Apex dilation = recoverable one more column, "apex_dilation".
+     *
+     * Recoverable apex dilation (cohesionless material only): a return
+     * that ends at zero stress, the apex, opens the grains by its
+     * volumetric plastic strain, kept as the gap e_a >= 0 (the grains out
+     * of contact of Dunatunga and Kamrin, J. Fluid Mech. 779, 2015, with
+     * the separation measured from where the particle was last dense). A
+     * separated particle (e_a > 0) carries no stress, normal or shear: its
+     * whole strain increment is plastic (the plastic strain columns, not
+     * the equivalent plastic strain, which measures frictional flow), the
+     * volumetric part changes e_a, nothing is stored or dissipated; the
+     * elastic energy a particle held when it reached the apex goes to its
+     * plastic work (the opening contacts release it into the grains, not
+     * into the flow). When a compression closes the gap
+     * within a step, the part of the increment after closure (the same
+     * fraction of every component) is the elastic trial from zero stress,
+     * as for a dense particle. With Apex dilation = permanent (default) the
+     * volume gained at the apex is never given back: compressed again, the
+     * particle takes the dense material's stress at once.
      */
     template <int dim>
     class PlasticHypoelastic : public Material<dim>
@@ -136,6 +155,8 @@ namespace psmpm
       static constexpr unsigned int kappa_column = dim == 1 ? 3 : 5;
       static constexpr unsigned int work_column  = kappa_column + 1;
       static constexpr unsigned int ratio_column = kappa_column + 2;
+      /// The gap e_a, present with recoverable apex dilation only.
+      static constexpr unsigned int apex_column = kappa_column + 3;
 
       double friction_angle  = 30; ///< degrees
       double dilatancy_angle = 0;  ///< degrees
@@ -147,6 +168,9 @@ namespace psmpm
       /// Above this volume ratio J = V/V0 the particle carries no stress
       /// (+infinity: never).
       double disconnected_volume_ratio = HUGE_VAL;
+      /// Apex dilation = recoverable: the volume a return to the apex adds
+      /// is a gap that compression closes at zero stress (apex_column).
+      bool recoverable_apex_dilation = false;
 
     protected:
       /**
@@ -174,6 +198,19 @@ namespace psmpm
                   SymmetricTensor<2, dim> *stress,
                   double                  *state,
                   double                  *volume_ratio) const;
+
+      /// update_with() with recoverable apex dilation: runs of dense
+      /// particles through update_with() itself (unchanged, also its pairs),
+      /// then separate_at_apex() for each; separated particles one at a
+      /// time, update_separated().
+      template <typename Return>
+      void
+      update_with_recoverable(const Return            &ret,
+                              const unsigned int       n,
+                              const Tensor<2, dim>    *dL,
+                              SymmetricTensor<2, dim> *stress,
+                              double                  *state,
+                              double                  *volume_ratio) const;
 
       /// What the update of every particle of a batch uses: the Lame
       /// constants, the reference density, 1 / E and nu for the elastic
@@ -213,6 +250,61 @@ namespace psmpm
                         const Strength &base,
                         const double   *block,
                         Strength       &softened) const;
+
+      /// The part of a separated particle's increment that goes into its
+      /// gap: the fraction of the increment (the whole of it while the
+      /// gap stays open) at zero stress, all plastic; the particle's
+      /// stress is set to zero. Returns the fraction of the increment
+      /// left after the gap has closed (0: still separated).
+      static double
+      close_gap(const double             tr,
+                const Tensor<2, dim>    &dL,
+                SymmetricTensor<2, dim> &stress,
+                double                  *block);
+
+      /// After the update of a dense particle whose plastic volumetric
+      /// strain was @p volumetric_before and whose stored energy per unit
+      /// mass was @p stored: if it returned to the apex (stress zero up to
+      /// round-off against the volumetric plastic increment), the
+      /// particle separates: its volumetric plastic increment becomes the
+      /// gap, its stress exactly zero, and the stored energy, which the
+      /// opening contacts release into the grains and not into the flow,
+      /// is added to its plastic work.
+      static void
+      separate_at_apex(const BatchConstants    &c,
+                       const double             volumetric_before,
+                       const double             stored,
+                       SymmetricTensor<2, dim> &stress,
+                       double                  *block);
+
+      /// The elastic (complementary) energy per unit volume of the stress
+      /// @p st with the out-of-plane (1D: lateral) stress @p zz.
+      static double
+      stored_energy(const BatchConstants          &c,
+                    const SymmetricTensor<2, dim> &st,
+                    const double                   zz);
+
+      /// The update of a separated particle (gap > 0) with the velocity
+      /// gradient increment @p dL: close_gap(), and the rest of the
+      /// increment, if any, through update_with() from zero stress.
+      template <typename Return>
+      void
+      update_separated(const Return            &ret,
+                       const BatchConstants    &c,
+                       const Tensor<2, dim>    &dL,
+                       SymmetricTensor<2, dim> &stress,
+                       double                  *block,
+                       double                  &volume_ratio) const;
+
+      /// The plastic volumetric strain of the state @p block.
+      static double
+      plastic_volumetric(const double *block)
+      {
+        if constexpr (dim == 1)
+          return block[plastic_xx] + 2 * block[2];
+        else
+          return block[plastic_xx] + block[2] + block[4];
+      }
 
       /// The update of one particle in uniaxial strain (1D) with the
       /// strain increment @p de: axial stress @p stress_xx, state

@@ -528,6 +528,175 @@ namespace psmpm
                                 volume_ratio[i]);
         }
     }
+
+
+
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline double
+    PlasticHypoelastic<dim>::stored_energy(const BatchConstants          &c,
+                                           const SymmetricTensor<2, dim> &st,
+                                           const double                   zz)
+    {
+      // As energy_density(); in 1D both lateral stresses are zz.
+      const double xx = st[0][0];
+      const double yy = dim == 1 ? zz : st[1 % dim][1 % dim];
+      const double xy = dim == 1 ? 0 : st[0][1 % dim];
+      return (xx * xx + yy * yy + zz * zz -
+              2 * c.nu * (xx * yy + yy * zz + zz * xx) +
+              2 * (1 + c.nu) * xy * xy) *
+             (0.5 * c.inv_e);
+    }
+
+
+
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline double
+    PlasticHypoelastic<dim>::close_gap(const double             tr,
+                                       const Tensor<2, dim>    &dL,
+                                       SymmetricTensor<2, dim> &st,
+                                       double                  *block)
+    {
+      double &gap = block[apex_column];
+      // The fraction of the increment spent in the gap: all of it while
+      // the gap stays open (also under extension, which widens it).
+      const bool   open    = gap + tr > 0;
+      const double closing = open ? 1 : -gap / tr;
+      block[plastic_xx] += closing * dL[0][0];
+      if constexpr (dim == 2)
+        {
+          block[2] += closing * dL[1][1];
+          block[3] += closing * 0.5 * (dL[0][1] + dL[1][0]);
+        }
+      st                  = SymmetricTensor<2, dim>();
+      block[out_of_plane] = 0;
+      gap                 = open ? gap + tr : 0;
+      return open ? 0 : 1 - closing;
+    }
+
+
+
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    PlasticHypoelastic<dim>::separate_at_apex(const BatchConstants &c,
+                                              const double volumetric_before,
+                                              const double stored,
+                                              SymmetricTensor<2, dim> &st,
+                                              double                  *block)
+    {
+      const double dilation = plastic_volumetric(block) - volumetric_before;
+      if (!(dilation > 0))
+        return;
+      // At the apex of a cohesionless surface the returned stress is zero
+      // (exactly for Drucker-Prager and a non-associated Mohr-Coulomb, to
+      // round-off of the trial stress for an associated one): a stress
+      // that small against the stress of the plastic increment is the
+      // apex.
+      const double limit   = 1e-10 * dilation / c.inv_e;
+      double       largest = std::abs(block[out_of_plane]);
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          largest = std::max(largest, std::abs(st[i][j]));
+      if (largest > limit)
+        return;
+      block[apex_column] = dilation;
+      block[work_column] += stored;
+      st                  = SymmetricTensor<2, dim>();
+      block[out_of_plane] = 0;
+    }
+
+
+
+    template <int dim>
+    template <typename Return>
+    void
+    PlasticHypoelastic<dim>::update_separated(const Return            &ret,
+                                              const BatchConstants    &c,
+                                              const Tensor<2, dim>    &dL,
+                                              SymmetricTensor<2, dim> &st,
+                                              double                  *block,
+                                              double &volume_ratio) const
+    {
+      const double tr   = trace(dL);
+      const double left = close_gap(tr, dL, st, block);
+      const double J    = block[ratio_column] * (1 + tr);
+      if (left > 0)
+        {
+          // The rest of the increment after the gap has closed: the
+          // update of a dense particle from zero stress, with the volume
+          // ratio of the whole increment (its plastic work uses it).
+          const Tensor<2, dim> rest   = left * dL;
+          const double         before = plastic_volumetric(block);
+          block[ratio_column]         = J / (1 + trace(rest));
+          update_with(ret, 1, &rest, &st, block, &volume_ratio);
+          separate_at_apex(c, before, 0, st, block);
+        }
+      block[ratio_column] = J;
+      volume_ratio        = 1 + tr;
+    }
+
+
+
+    template <int dim>
+    template <typename Return>
+    void
+    PlasticHypoelastic<dim>::update_with_recoverable(
+      const Return            &ret,
+      const unsigned int       n,
+      const Tensor<2, dim>    *dL,
+      SymmetricTensor<2, dim> *stress,
+      double                  *state,
+      double                  *volume_ratio) const
+    {
+      const BatchConstants      c      = {this->lame_lambda(),
+                                          2 * this->shear_modulus(),
+                                          this->density,
+                                          1 / this->youngs_modulus,
+                                          this->poisson_ratio,
+                                          1 / this->density,
+                                          HUGE_VAL};
+      const unsigned int        stride = this->state_stride();
+      constexpr unsigned int    chunk  = 64;
+      std::array<double, chunk> before, stored;
+      for (unsigned int i = 0; i < n;)
+        {
+          if (state[stride * i + apex_column] > 0)
+            {
+              update_separated(ret,
+                               c,
+                               dL[i],
+                               stress[i],
+                               state + stride * i,
+                               volume_ratio[i]);
+              ++i;
+              continue;
+            }
+          // A run of dense particles: the update without the option (two
+          // at a time where it can), then which of them reached the apex.
+          unsigned int k = 0;
+          for (; k < chunk && i + k < n; ++k)
+            {
+              const double *const block = state + stride * (i + k);
+              if (block[apex_column] > 0)
+                break;
+              before[k] = plastic_volumetric(block);
+              stored[k] = block[ratio_column] * c.inv_rho0 *
+                          stored_energy(c, stress[i + k], block[out_of_plane]);
+            }
+          update_with(ret,
+                      k,
+                      dL + i,
+                      stress + i,
+                      state + stride * i,
+                      volume_ratio + i);
+          for (unsigned int j = 0; j < k; ++j)
+            separate_at_apex(c,
+                             before[j],
+                             stored[j],
+                             stress[i + j],
+                             state + stride * (i + j));
+          i += k;
+        }
+    }
   } // namespace Material
 } // namespace psmpm
 
