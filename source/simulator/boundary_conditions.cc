@@ -837,9 +837,7 @@ namespace psmpm
       // that they did not move with, and column collapses went unstable.)
       if (state.grid_velocity.size() != wall_of.size())
         return;
-      bool        held = false;
-      const auto &mass = state.grid->lumped_mass();
-      double      work = 0;
+      bool held = false;
       for (unsigned int w = 0; w < walls.size(); ++w)
         {
           const WallDof &wall = walls[w];
@@ -849,40 +847,51 @@ namespace psmpm
             {
               change =
                 -std::copysign(std::min(std::abs(vt), hold_capacity[w]), vt);
-              if (wall_owned[w])
-                work += mass[wall.dof] * change * (vt + 0.5 * change);
               vt += change;
               held = true;
             }
           hold_change[w] = change;
         }
+      // The work is the particles' kinetic energy change, which the
+      // grid's m_i dv (v + dv / 2) misses where the particles' velocities
+      // differ within a DoF's support.
+      double work = held ? hold_particles(state) : 0.;
       if (sum_over_ranks)
         work = Utilities::MPI::sum(work, state.grid->get_communicator());
       accumulated_friction_work += work;
-      if (held)
-        hold_particles(state);
     }
 
     template <int dim>
-    void
+    double
     BoundaryConditions<dim>::hold_particles(State<dim> &state) const
     {
       auto              &particles = state.particles;
       const auto        &grid      = *state.grid;
       const unsigned int n         = grid.dofs_per_cell;
       const auto        &dofs      = grid.cell_dofs();
+      double             work      = 0;
       for (std::size_t p = 0; p < particles.size(); ++p)
         {
           const unsigned int base = particles.cell[p] * n;
           const double      *phi  = &state.shape_values[p * n];
+          Tensor<1, dim>     change;
+          bool               changed = false;
           for (unsigned int k = 0; k < n; ++k)
             {
               const unsigned int w = wall_of[dofs[base + k]];
               if (w != invalid && hold_change[w] != 0)
-                particles.velocity[p][walls[w].tangential] +=
-                  phi[k] * hold_change[w];
+                {
+                  change[walls[w].tangential] += phi[k] * hold_change[w];
+                  changed = true;
+                }
             }
+          if (!changed)
+            continue;
+          work += particles.mass[p] *
+                  (particles.velocity[p] * change + 0.5 * change * change);
+          particles.velocity[p] += change;
         }
+      return work;
     }
 
     template <int dim>

@@ -139,8 +139,9 @@ namespace psmpm
       stop_particles(State<dim> &state);
 
     private:
-      /// The hold's change of the wall DoFs to the particles' velocities.
-      void
+      /// The hold's change of the wall DoFs to the particles' velocities;
+      /// returns the particles' kinetic energy change (this rank's).
+      double
       hold_particles(State<dim> &state) const;
 
       /// The constraints' change dv_i of the fixed and prescribed DoFs
