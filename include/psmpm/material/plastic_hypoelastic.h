@@ -227,6 +227,19 @@ namespace psmpm
         double disconnected_ratio;
       };
 
+      /// This material's BatchConstants.
+      BatchConstants
+      batch_constants() const
+      {
+        return {this->lame_lambda(),
+                2 * this->shear_modulus(),
+                this->density,
+                1 / this->youngs_modulus,
+                this->poisson_ratio,
+                1 / this->density,
+                disconnected_volume_ratio};
+      }
+
       /// After the return of the principal stresses @p trial to @p sigma:
       /// the plastic strain increment C^-1 (trial - sigma) (principal
       /// frame) and the equivalent plastic strain of @p block, with

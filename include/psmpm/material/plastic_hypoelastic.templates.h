@@ -473,13 +473,7 @@ namespace psmpm
                                          double                  *state,
                                          double *volume_ratio) const
     {
-      const BatchConstants c      = {this->lame_lambda(),
-                                     2 * this->shear_modulus(),
-                                     this->density,
-                                     1 / this->youngs_modulus,
-                                     this->poisson_ratio,
-                                     1 / this->density,
-                                     disconnected_volume_ratio};
+      const BatchConstants c      = batch_constants();
       const unsigned int   stride = this->state_stride();
       Strength             base   = strength(0);
       ret.prepare(base);
@@ -647,13 +641,8 @@ namespace psmpm
       double                  *state,
       double                  *volume_ratio) const
     {
-      const BatchConstants      c      = {this->lame_lambda(),
-                                          2 * this->shear_modulus(),
-                                          this->density,
-                                          1 / this->youngs_modulus,
-                                          this->poisson_ratio,
-                                          1 / this->density,
-                                          HUGE_VAL};
+      // Disconnected volume ratio is refused with recoverable: none.
+      const BatchConstants      c      = batch_constants();
       const unsigned int        stride = this->state_stride();
       constexpr unsigned int    chunk  = 64;
       std::array<double, chunk> before, stored;
