@@ -15,7 +15,7 @@
 // below 1 % of the footing's work (measured 0.4 %) and the footing's work
 // equals the dissipated plus strain plus kinetic energy within 2 % (measured
 // 0.8 %).
-#include "../mpm_tests.h"
+#include "../footing_tests.h"
 
 #include <filesystem>
 
@@ -38,48 +38,20 @@ main(int argc, char **argv)
   out << "status: " << psmpm::Simulator::status_name(status) << std::endl;
   PSMPM_CHECK(out, status == psmpm::Simulator::Status::completed);
 
-  const StatisticsTable statistics(dir);
-  const auto            t          = statistics.column("time");
-  const auto            footing    = statistics.column("reaction_footing_y");
-  const auto            floor      = statistics.column("reaction_bottom_y");
-  const auto            kinetic    = statistics.column("kinetic_energy");
-  const auto            work       = statistics.column("prescribed_work");
-  const auto            strain     = statistics.column("strain_energy");
-  const auto            dissipated = statistics.column("dissipated_energy");
+  const FootingRun run(StatisticsTable(dir),
+                       "reaction_footing_y",
+                       "prescribed_work",
+                       B,
+                       c_u,
+                       v0,
+                       ramp);
+  const auto      &t = run.t, &footing = run.footing;
   PSMPM_CHECK(out, t.size() > 100 && footing.size() == t.size());
-
-  // Settlement over B and load over c_u per row.
-  std::vector<double> s(t.size()), q(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i)
-    {
-      s[i] =
-        (t[i] < ramp ? v0 * t[i] * t[i] / (2 * ramp) : v0 * (t[i] - ramp / 2)) /
-        B;
-      q[i] = -2 * footing[i] / B / c_u;
-    }
-  double q_u = 0, at = 0;
-  for (double lo = 0; lo + 0.01 <= s.back() + 1e-12; lo += 0.0025)
-    {
-      double sum = 0;
-      int    n   = 0;
-      for (std::size_t i = 0; i < s.size(); ++i)
-        if (s[i] >= lo && s[i] < lo + 0.01)
-          sum += q[i], ++n;
-      if (n > 0 && sum / n > q_u)
-        q_u = sum / n, at = lo + 0.005;
-    }
-  // Global equilibrium once the load is up (s > 0.02 B).
-  double footing_sum = 0, floor_sum = 0, kinetic_max = 0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    {
-      if (s[i] > 0.02)
-        footing_sum += footing[i], floor_sum += floor[i];
-      kinetic_max = std::max(kinetic_max, kinetic[i]);
-    }
-  const double balance = -floor_sum / footing_sum - 1;
-  const double closure =
-    (work.back() - dissipated.back() - strain.back() - kinetic.back()) /
-    work.back();
+  double       at      = 0;
+  const double q_u     = run.largest_window_mean(at);
+  const double balance = run.balance, closure = run.closure;
+  const double kinetic_max = run.kinetic_max;
+  const auto  &work        = run.work;
   std::cout << "q_u / c_u = " << q_u << " (Prandtl " << prandtl << ", error "
             << q_u / prandtl - 1 << ") at s/B = " << at
             << ", floor/footing - 1 = " << balance

@@ -24,7 +24,7 @@
 //   velocity: the mean height of Body 2 fell by the settlement within
 //   1e-6 m (measured 1e-8 m, the midpoint rule in the step of the ramp's
 //   kink), its mean x stayed.
-#include "../mpm_tests.h"
+#include "../footing_tests.h"
 
 #include <filesystem>
 
@@ -35,60 +35,29 @@ main(int argc, char **argv)
   std::ofstream     out("output");
   const double      B = 1, c_u = 1e4, v0 = 0.1, ramp = 0.1;
   const double      prandtl = 2 + numbers::PI;
-  auto              solver = make_scene_solver("strip_footing_body.prm",
+  auto              solver  = make_scene_solver("strip_footing_body.prm",
                                   {"Time/End time=1.25", "Output/Interval=0"});
-  const std::string dir    = "run";
+  const std::string dir     = "run";
   std::filesystem::create_directories(dir);
   const auto status = solver->run(dir);
   out << "status: " << psmpm::Simulator::status_name(status) << std::endl;
   PSMPM_CHECK(out, status == psmpm::Simulator::Status::completed);
 
   const StatisticsTable statistics(dir);
-  const auto            t          = statistics.column("time");
-  const auto            footing    = statistics.column("contact_force_1_2_y");
-  const auto            floor      = statistics.column("reaction_bottom_y");
-  const auto            kinetic    = statistics.column("kinetic_energy");
-  const auto            work       = statistics.column("driven_work");
-  const auto            strain     = statistics.column("strain_energy");
-  const auto            dissipated = statistics.column("dissipated_energy");
-  const auto            y          = statistics.column("body2_y");
-  const auto            x          = statistics.column("body2_x");
+  const FootingRun
+    run(statistics, "contact_force_1_2_y", "driven_work", B, c_u, v0, ramp);
+  const auto  y = statistics.column("body2_y");
+  const auto  x = statistics.column("body2_x");
+  const auto &t = run.t, &footing = run.footing;
   PSMPM_CHECK(out, t.size() > 100 && footing.size() == t.size());
-
-  // Settlement over B and load over c_u per row.
-  std::vector<double> s(t.size()), q(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i)
-    {
-      s[i] =
-        (t[i] < ramp ? v0 * t[i] * t[i] / (2 * ramp) : v0 * (t[i] - ramp / 2)) /
-        B;
-      q[i] = -2 * footing[i] / B / c_u;
-    }
-  const auto window_mean = [&](const double lo, const double hi) {
-    double sum = 0;
-    int    n   = 0;
-    for (std::size_t i = 0; i < s.size(); ++i)
-      if (s[i] >= lo && s[i] < hi)
-        sum += q[i], ++n;
-    return n > 0 ? sum / n : 0.;
-  };
-  double q_u = 0;
-  for (double lo = 0; lo + 0.01 <= s.back() + 1e-12; lo += 0.0025)
-    q_u = std::max(q_u, window_mean(lo, lo + 0.01));
-  const double q_end = window_mean(s.back() - 0.02, s.back() + 1);
-
-  double footing_sum = 0, floor_sum = 0, kinetic_max = 0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    {
-      if (s[i] > 0.02)
-        footing_sum += footing[i], floor_sum += floor[i];
-      kinetic_max = std::max(kinetic_max, kinetic[i]);
-    }
-  const double balance = -floor_sum / footing_sum - 1;
-  const double closure =
-    (work.back() - dissipated.back() - strain.back() - kinetic.back()) /
-    work.back();
-  const double sinking = y.front() - y.back() - s.back() * B;
+  double       at      = 0;
+  const double q_u     = run.largest_window_mean(at);
+  const double q_end   = run.window_mean(run.s.back() - 0.02, run.s.back() + 1);
+  const double balance = run.balance, closure = run.closure;
+  const double kinetic_max = run.kinetic_max;
+  const auto  &work        = run.work;
+  const auto  &s           = run.s;
+  const double sinking     = y.front() - y.back() - s.back() * B;
   std::cout << "q_end / c_u = " << q_end << " (Prandtl " << prandtl
             << ", error " << q_end / prandtl - 1
             << "), q_end / q_u = " << q_end / q_u
