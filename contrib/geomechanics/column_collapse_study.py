@@ -3,7 +3,7 @@
 
   /usr/bin/python3 contrib/geomechanics/column_collapse_study.py
       [build/psmpm] [work dir] [--ratios 0.5,1,2,3,4] [--cells 20]
-      [--bases linear,powell-sabin] [--floor 0.36|1e6|no-slip|frictionless]
+      [--bases linear,powell-sabin] [--floor 0.36|no-slip|frictionless]
       [--set "Section/Entry=value" ...]
 
 prm/granular_column_collapse.prm (aluminium rods of Bui et al. 2008:
@@ -22,11 +22,13 @@ columns:
 From the last particle output also h_wall (the highest particle within
 one cell of the wall: equal to body1_y_max unless a particle was thrown
 up), V/V0 (the particles' total volume over the initial one: the
-deposit's dilation) and the deposit's front d_front: the particles
-sorted by x, the last one before the first gap of more than one cell
-width (the particles beyond it, a few thrown ahead of the deposit and
-counted as n_ahead, set body1_x_max alone). --floor takes a friction coefficient (1e6: a rough
-floor that sticks wherever it pushes), no-slip or frictionless.
+deposit's dilation) and the number n_ahead of particles beyond the
+deposit's front d_front = body1_x_front (Output/Deposit front gap = one
+cell: the particles sorted by x, the last one before the first gap of
+more than one cell; the few thrown ahead of the deposit set body1_x_max
+alone). The floor is the scene's (rough: Coulomb friction with mu = 1e6,
+sticking wherever the floor pushes) unless --floor gives a friction
+coefficient, no-slip or frictionless.
 Writes column_collapse.tsv and column_collapse.png into the work
 directory (copy them to doc/data/ and doc/images/), prints the table with
 CPU and wall seconds per run. Reports; never fails on numbers.
@@ -53,7 +55,7 @@ parser.add_argument("work", nargs="?", default=None)
 parser.add_argument("--ratios", default="0.5,1,2,3,4")
 parser.add_argument("--cells", type=int, default=20)
 parser.add_argument("--bases", default="linear,powell-sabin")
-parser.add_argument("--floor", default="0.36")
+parser.add_argument("--floor", default="")
 parser.add_argument("--set", action="append", default=[],
                     help="an extra psmpm --set entry for every run")
 # Per basis the transfer: Powell-Sabin with MUSL keeps the energy books
@@ -79,6 +81,8 @@ def law_runout(a):
 
 
 def floor_settings(floor):
+    if not floor:
+        return []
     if floor == "no-slip":
         return ["--set", "Boundary conditions/Fixed x=left, bottom",
                 "--set", "Boundary conditions/Friction coefficient="]
@@ -137,7 +141,8 @@ def run(a, basis):
                "--set", f"Mesh/Blocks y={ny}",
                "--set", f"Bodies/Body 1/Corners=0, 0, {d0}, {h0}",
                "--set", f"Time/End time={end}",
-               "--set", "Output/Interval=0"] + floor_settings(args.floor)
+               "--set", "Output/Interval=0",
+               "--set", f"Output/Deposit front gap={h}"] + floor_settings(args.floor)
     for entry in args.set:
         command += ["--set", entry]
     start = time.time()
@@ -149,6 +154,10 @@ def run(a, basis):
         print(f"a = {a} {basis}: exit {result.returncode}: {summary.get('reason', '')}", file=sys.stderr)
     first, row = first_and_last_rows(os.path.join(out, "statistics.txt"))
     volume, wall_height, front, ahead = deposit(out, h)
+    # The statistics column body1_x_front is the same measure, every step.
+    if abs(row["body1_x_front"] - front) > 1e-6 * d0:
+        print(f"a = {a} {basis}: body1_x_front {row['body1_x_front']} != {front} from the particles",
+              file=sys.stderr)
     released = -row["gravity_energy"] if row["gravity_energy"] < 0 else float("nan")
     # What is conserved: total (kinetic + strain + gravity + dissipated)
     # minus the floor's friction work.
