@@ -61,7 +61,7 @@ parser.add_argument("--set", action="append", default=[],
 # Per basis the transfer: Powell-Sabin with MUSL keeps the energy books
 # (lumped mass); P1 with MUSL goes unstable at the toe of a cohesionless
 # flow, so P1 runs with APIC (doc/geomechanics.md).
-parser.add_argument("--transfers", default="linear:apic,powell-sabin:musl")
+parser.add_argument("--transfers", default="linear:musl,powell-sabin:musl")
 args = parser.parse_args()
 work = args.work or tempfile.mkdtemp(prefix="psmpm-column-collapse.")
 os.makedirs(work, exist_ok=True)
