@@ -42,7 +42,8 @@ settlement (q_end, end_error against the reference), q_end / q_u
 (hold: 1 if the load does not fall after its largest window) and the
 mean of q/c over s = 0.045-0.055 B (q_05). --set
 passes entries to every run (e.g. "Contact/Separation criterion=volume
-fraction"). Files: doc/data/strip_footing_body.tsv and
+fraction", or "Contact/Driven body nodes=geometry": the footing grips the
+soil only at the nodes on or inside its moved outline). Files: doc/data/strip_footing_body.tsv and
 doc/images/strip_footing_body.png (--no-files: none).
 
 Needs python3-numpy and python3-matplotlib (Debian).

@@ -71,6 +71,7 @@ namespace psmpm
       volume.assign(with_volumes ? n : 0, 0.);
       node_volume.assign(with_volumes ? n_nodes : 0, 0.);
       centroid.assign(with_centroids ? n : 0, Point<dim>());
+      normal_only.clear();
     }
 
     template <int dim>
@@ -162,6 +163,17 @@ namespace psmpm
         "'distance' when their mass centres at the node are at most "
         "Contact distance apart along the normal.");
       prm.declare_entry(
+        "Driven body nodes",
+        "particle mass",
+        Patterns::Selection("particle mass|geometry"),
+        "Where a driven body (Bodies/Body k/Motion = prescribed) holds "
+        "the other bodies by friction: 'particle mass' at every node where "
+        "its particles have mass (up to a cell beyond its outline); "
+        "'geometry' only at the nodes (Powell-Sabin: the DoFs of the "
+        "vertices) inside or on the outline of its shape moved by its "
+        "displacement, with the normal correction alone at the other "
+        "nodes where it has mass (doc/contact.md, \"Driven bodies\").");
+      prm.declare_entry(
         "Critical volume fraction",
         "0.8",
         Patterns::Double(0, 1),
@@ -226,6 +238,7 @@ namespace psmpm
                                          SeparationCriterion::volume_fraction;
       critical_volume_fraction = prm.get_double("Critical volume fraction");
       contact_distance         = prm.get_double("Contact distance");
+      driven_nodes_from_geometry = prm.get("Driven body nodes") == "geometry";
       AssertThrow(
         criterion != SeparationCriterion::distance || contact_distance > 0,
         ExcMessage("Contact/Contact distance = " + prm_value(contact_distance) +
@@ -330,6 +343,7 @@ namespace psmpm
       const unsigned int n           = fields.n_bodies;
       constexpr double   infinite    = std::numeric_limits<double>::infinity();
       const bool         with_driven = !driven.empty();
+      const bool with_normal_only = with_driven && !fields.normal_only.empty();
       for (unsigned int a = 0; a < n; ++a)
         {
           const unsigned int ia = i * n + a;
@@ -350,7 +364,12 @@ namespace psmpm
                   !close_enough(fields, i, a, b, normal))
                 continue;
               const unsigned int pair = pair_index(a, b, n);
-              const double       mu = with_friction ? pair_friction[pair] : 0.;
+              const double       mu =
+                with_friction &&
+                    !(with_normal_only &&
+                      (fields.normal_only[ia] || fields.normal_only[ib])) ?
+                        pair_friction[pair] :
+                        0.;
               if (!fields.stuck.empty() && mu > 0)
                 {
                   const Tensor<1, dim> w =

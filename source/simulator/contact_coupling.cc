@@ -97,6 +97,24 @@ namespace psmpm
       contact.driven.clear();
       if (driven_bodies.any())
         contact.driven = driven_bodies.flags();
+      AssertThrow(dim == 2 || !contact.driven_nodes_from_geometry ||
+                    !driven_bodies.any(),
+                  ExcMessage("Contact/Driven body nodes = geometry: needs a "
+                             "2D run (the bodies' shapes are 2D)."));
+    }
+
+    template <int dim>
+    void
+    ContactCoupling<dim>::mark_normal_only()
+    {
+      if (!contact.driven_nodes_from_geometry || !driven_bodies.any())
+        return;
+      fields.normal_only.assign(fields.mass.size(), 0);
+      for (unsigned int i = 0; i < contact_dofs.size(); ++i)
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          if (contact.driven[b] && fields.mass[i * n_bodies + b] > 0 &&
+              !driven_bodies.inside(b, vertex_point[contact_dofs[i]]))
+            fields.normal_only[i * n_bodies + b] = 1;
     }
 
     template <int dim>
@@ -231,6 +249,27 @@ namespace psmpm
         for (unsigned int c = 0; c < contact_cell.size(); ++c)
           for (unsigned int k = 0; k < n; ++k)
             vertex_dof[dofs[c * n + k]] = dofs[c * n + k - k % per_vertex];
+      // Where a DoF is for a driven body's shape: at its vertex, whose
+      // DoFs (Powell-Sabin: three) give the field's value and gradient
+      // there (their control points lie around it, inside and outside an
+      // outline through the vertex).
+      vertex_point.clear();
+      if (contact.driven_nodes_from_geometry && driven_bodies.any())
+        {
+          AssertThrow(
+            per_vertex *
+                state.space->dof_layout().reference_cell().n_vertices() ==
+              n,
+            ExcMessage("Contact/Driven body nodes = geometry: "
+                       "needs a basis with DoFs at the vertices "
+                       "alone (linear, powell-sabin)."));
+          vertex_point.resize(n_relevant);
+          for (const auto &cell : state.dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (unsigned int k = 0; k < n; ++k)
+                vertex_point[dofs[cell->active_cell_index() * n + k]] =
+                  cell->vertex(k / per_vertex);
+        }
     }
 
     template <int dim>
@@ -514,6 +553,7 @@ namespace psmpm
         }
       vertex_gradients();
       set_driven_fields();
+      mark_normal_only();
       correction_direction = fields.velocity;
       fields.stuck.assign(n_contact * n_bodies, 0);
       apply_correction();
@@ -743,6 +783,9 @@ namespace psmpm
       if (driven_bodies.any())
         archive.put("contact/driven_work",
                     std::vector<double>{accumulated_driven_work});
+      if (driven_bodies.any() && contact.driven_nodes_from_geometry)
+        archive.put("contact/driven_displacement",
+                    driven_bodies.displacements());
     }
 
     template <int dim>
@@ -757,6 +800,9 @@ namespace psmpm
       slip_work   = archive.get("contact/slip_work", slip_work.size());
       if (driven_bodies.any())
         accumulated_driven_work = archive.get("contact/driven_work", 1)[0];
+      if (driven_bodies.any() && contact.driven_nodes_from_geometry)
+        driven_bodies.set_displacements(
+          archive.get("contact/driven_displacement", n_bodies * dim));
     }
 
     template class ContactCoupling<1>;

@@ -64,6 +64,44 @@ namespace psmpm
                              "): at least one body must move freely."));
       end_velocity.assign(bodies.size(), Tensor<1, dim>());
       mid_velocity.assign(bodies.size(), Tensor<1, dim>());
+      shapes.clear();
+      for (const auto &body : bodies)
+        shapes.push_back(body.shape);
+      start_displacement.assign(bodies.size(), Tensor<1, dim>());
+      end_displacement.assign(bodies.size(), Tensor<1, dim>());
+    }
+
+    template <int dim>
+    bool
+    DrivenBodies<dim>::inside(const unsigned int b, const Point<dim> &x) const
+    {
+      // The shape is 2D: a point of a 1D run on the x axis.
+      Point<2> y;
+      for (unsigned int d = 0; d < dim; ++d)
+        y[d] = x[d] - start_displacement[b][d];
+      return shapes[b].inside(y);
+    }
+
+    template <int dim>
+    std::vector<double>
+    DrivenBodies<dim>::displacements() const
+    {
+      std::vector<double> values;
+      for (const auto &u : end_displacement)
+        for (unsigned int d = 0; d < dim; ++d)
+          values.push_back(u[d]);
+      return values;
+    }
+
+    template <int dim>
+    void
+    DrivenBodies<dim>::set_displacements(const std::vector<double> &values)
+    {
+      AssertDimension(values.size(), end_displacement.size() * dim);
+      for (unsigned int b = 0; b < end_displacement.size(); ++b)
+        for (unsigned int d = 0; d < dim; ++d)
+          end_displacement[b][d] = values[b * dim + d];
+      start_displacement = end_displacement;
     }
 
     template <int dim>
@@ -87,6 +125,8 @@ namespace psmpm
           {
             end_velocity[b] = velocity(b, state.time + state.dt);
             mid_velocity[b] = velocity(b, state.time + 0.5 * state.dt);
+            start_displacement[b] = end_displacement[b];
+            end_displacement[b] += state.dt * mid_velocity[b];
           }
       const auto &set = state.particles;
       particles.clear();

@@ -5,8 +5,9 @@
 // exit code 2, a message naming the parameter file, the entry and its
 // value, and no output: a velocity that does not parse, one with an
 // unknown variable, one with too few components, a driven body without
-// Contact/Type = multi-velocity, every body driven, and Motion not one
-// of its choices. prm/strip_footing_body.prm itself passes --validate.
+// Contact/Type = multi-velocity, every body driven, Motion not one of
+// its choices and Contact/Driven body nodes not one of its choices.
+// prm/strip_footing_body.prm itself passes --validate.
 #include "../app_tests.h"
 
 int
@@ -73,6 +74,13 @@ main(int argc, char **argv)
                   "motion not a choice",
                   head + contact + bodies("", "  set Motion = rigid\n"),
                   {"Motion", "rigid"});
+  check_bad_input(out,
+                  "driven body nodes not a choice",
+                  head +
+                    "subsection Contact\n set Type = multi-velocity\n"
+                    " set Driven body nodes = vertices\nend\n" +
+                    bodies("", driven),
+                  {"Driven body nodes", "vertices"});
 
   std::string screen, message;
   const int   code =

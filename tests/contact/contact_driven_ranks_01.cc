@@ -6,11 +6,14 @@
 // resumed from its checkpoint repeats the run in one go bit for bit: the
 // strip footing of prm/strip_footing_body.prm (the footing Body 2 driven
 // down into the soil) on h = B/4 to t = 0.3 s, linear (musl) and
-// Powell-Sabin (apic). The driven particles are ordinary particles
-// between the steps (checkpoints, ranks); their list, their start
-// positions and the driven velocities are rebuilt each step, and the
-// accumulated driven_work travels in the checkpoint. Printed: the last
-// row's energies, contact force, floor reaction, driven work and the
+// Powell-Sabin (apic), with Contact/Driven body nodes = particle mass
+// and geometry (the nodes' shares are sums over the cells, added up
+// over the ranks; the footing's displacement travels in the
+// checkpoint). The driven particles are ordinary particles between the
+// steps (checkpoints, ranks); their list, their start positions and the
+// driven velocities are rebuilt each step, and the accumulated
+// driven_work travels in the checkpoint. Printed: the last row's
+// energies, contact force, floor reaction, driven work and the
 // footing's height (7 digits).
 #include "../app_tests.h"
 #include "../checkpoint_tests.h"
@@ -18,11 +21,14 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <utility>
+#include <vector>
 
 namespace
 {
   int
   run(const std::string &basis,
+      const std::string &nodes,
       const std::string &directory,
       const std::string &end,
       const bool         resume)
@@ -41,7 +47,9 @@ namespace
                                      "--set",
                                      "Mesh/Blocks y=12",
                                      "--set",
-                                     "Time/End time=" + end};
+                                     "Time/End time=" + end,
+                                     "--set",
+                                     "Contact/Driven body nodes=" + nodes};
     if (resume)
       args.push_back("--resume");
     std::string screen, errors;
@@ -54,17 +62,23 @@ main(int argc, char **argv)
 {
   psmpm::MPISession mpi(argc, argv);
   std::ofstream     out = root_output();
-  for (const std::string basis : {"linear", "powell-sabin"})
+  for (const auto &[basis, nodes] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"linear", "particle mass"},
+         {"powell-sabin", "particle mass"},
+         {"linear", "geometry"},
+         {"powell-sabin", "geometry"}})
     {
-      const std::string whole = "whole-" + basis, split = "split-" + basis;
+      const std::string tag = basis + (nodes == "geometry" ? "-geometry" : ""),
+                        whole = "whole-" + tag, split = "split-" + tag;
       if (is_root_rank())
         for (const auto &d : {whole, split})
           std::filesystem::remove_all(d);
       MPI_Barrier(MPI_COMM_WORLD);
-      const int code = run(basis, whole, "0.3", false);
-      out << basis << ": exit code " << code << std::endl;
-      PSMPM_CHECK(out, run(basis, split, "0.15", false) == 0);
-      PSMPM_CHECK(out, run(basis, split, "0.3", true) == 0);
+      const int code = run(basis, nodes, whole, "0.3", false);
+      out << tag << ": exit code " << code << std::endl;
+      PSMPM_CHECK(out, run(basis, nodes, split, "0.15", false) == 0);
+      PSMPM_CHECK(out, run(basis, nodes, split, "0.3", true) == 0);
       const auto a = statistics_rows(whole + "/statistics.txt"),
                  b = statistics_rows(split + "/statistics.txt");
       PSMPM_CHECK(out, a.size() > 100 && a == b);

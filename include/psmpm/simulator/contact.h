@@ -64,6 +64,11 @@ namespace psmpm
       /// the body stuck to another body at the node in apply() with
       /// friction (mu > 0 and the tangential relative velocity removed).
       std::vector<char> stuck;
+      /// Optional (empty: none), [node * n_bodies + body], read for
+      /// driven bodies only: 1 where the body's pairs take the normal
+      /// correction alone at the node (frictionless), whatever the pair's
+      /// friction coefficient. reinit() empties it.
+      std::vector<char> normal_only;
     };
 
     /**
@@ -230,6 +235,12 @@ namespace psmpm
       /// driven bodies skipped. Empty: none. The caller sets the driven
       /// velocity into the fields before apply().
       std::vector<char> driven;
+
+      /// Contact/Driven body nodes = geometry: the caller marks the nodes
+      /// outside a driven body's moved shape where it has mass
+      /// (ContactFields::normal_only); false: friction wherever it has
+      /// mass.
+      bool driven_nodes_from_geometry = false;
 
       NormalType          normal_type = NormalType::average;
       SeparationCriterion criterion   = SeparationCriterion::volume_fraction;

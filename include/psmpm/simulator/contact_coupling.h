@@ -220,6 +220,12 @@ namespace psmpm
       void
       set_driven_fields();
 
+      /// Contact/Driven body nodes = geometry: marks the contact DoFs
+      /// whose vertex lies outside a driven body's moved shape, where the
+      /// body has mass, as normal-only for it (fields.normal_only).
+      void
+      mark_normal_only();
+
       /// move_affine() of the particles near contact DoFs.
       void
       move_near_contact(State<dim>       &state,
@@ -276,6 +282,9 @@ namespace psmpm
       std::vector<double>       dof_volume;
       /// Per local relevant DoF: the first DoF of its vertex.
       std::vector<unsigned int> vertex_dof;
+      /// Per local relevant DoF: its vertex's position (only with
+      /// Contact/Driven body nodes = geometry and a driven body).
+      std::vector<Point<dim>> vertex_point;
       /// Scratch of vertex_gradients().
       std::vector<unsigned int>   vertex_slot;
       std::vector<Tensor<1, dim>> grouped;

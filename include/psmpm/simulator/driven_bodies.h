@@ -79,6 +79,21 @@ namespace psmpm
         return end_velocity[b];
       }
 
+      /// Whether @p x lies inside (or on the outline of) driven body @p b's
+      /// shape (Bodies/Body k) moved by its displacement at the start of
+      /// the step, valid after start_step(). A rigid body that translates
+      /// fills exactly that region (a 1D point is taken on the x axis).
+      bool
+      inside(const unsigned int b, const Point<dim> &x) const;
+
+      /// The displacement of every body at the end of the step (the
+      /// integral of v over the steps so far, 0 for free bodies), which
+      /// a checkpoint keeps; set_displacements() restores it.
+      std::vector<double>
+      displacements() const;
+      void
+      set_displacements(const std::vector<double> &values);
+
       /**
        * After the particle velocity update (MUSL's accelerate, apic's
        * grid-to-particle): v_p = v(t^{n+1}) and, with @p affine, C_p = 0;
@@ -111,6 +126,11 @@ namespace psmpm
       std::vector<std::size_t>    particles;
       std::vector<Point<dim>>     start_position;
       std::vector<Tensor<1, dim>> end_velocity, mid_velocity;
+      /// Per body: its shape as given, and its displacement at the start
+      /// and at the end of the step (sum of dt v(t^n + dt/2), the
+      /// particles' own midpoint rule).
+      std::vector<Particles::Shape> shapes;
+      std::vector<Tensor<1, dim>>   start_displacement, end_displacement;
       double                      energy_change = 0;
     };
   } // namespace Simulator
