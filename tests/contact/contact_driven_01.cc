@@ -25,15 +25,6 @@ namespace
 {
   constexpr double infinite = std::numeric_limits<double>::infinity();
 
-  Tensor<1, 2>
-  vec(const double x, const double y)
-  {
-    Tensor<1, 2> t;
-    t[0] = x;
-    t[1] = y;
-    return t;
-  }
-
   void
   print(std::ostream                   &out,
         const std::string              &name,

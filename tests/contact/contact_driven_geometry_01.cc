@@ -19,15 +19,6 @@
 
 namespace
 {
-  Tensor<1, 2>
-  vec(const double x, const double y)
-  {
-    Tensor<1, 2> t;
-    t[0] = x;
-    t[1] = y;
-    return t;
-  }
-
   void
   shape(std::ostream &out)
   {

@@ -36,15 +36,6 @@ namespace
     f.velocity[b]      = v;
   }
 
-  Tensor<1, 2>
-  vec(const double x, const double y)
-  {
-    Tensor<1, 2> t;
-    t[0] = x;
-    t[1] = y;
-    return t;
-  }
-
   void
   three_bodies(std::ostream &out)
   {

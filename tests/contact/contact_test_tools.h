@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // psmpm: what the contact tests share: a Contact made from entries of
-// subsection Contact, and the node's momentum and kinetic energy.
+// subsection Contact, 2D vectors, and the node's momentum and kinetic
+// energy.
 // ---------------------------------------------------------------------
 #ifndef psmpm_tests_contact_test_tools_h
 #define psmpm_tests_contact_test_tools_h
@@ -34,6 +35,16 @@ make_contact(const std::vector<std::pair<std::string, std::string>> &settings,
   prm.leave_subsection();
   contact.check_bodies(n_bodies);
   return contact;
+}
+
+/// The 2D vector (x, y).
+inline dealii::Tensor<1, 2>
+vec(const double x, const double y)
+{
+  dealii::Tensor<1, 2> t;
+  t[0] = x;
+  t[1] = y;
+  return t;
 }
 
 /// sum_b m_b v_b at node @p i.
