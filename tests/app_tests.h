@@ -41,6 +41,23 @@ run_app(const std::vector<std::string> &args,
   return code;
 }
 
+/// The start of a small scene for check_bad_input(): output to bad_output,
+/// 1 m x 1 m in 10 x 10 blocks of 2 x 2 particles, no walls, no
+/// reference, to 0.01 s; the case appends its bodies and entries.
+inline std::string
+small_bad_input_scene()
+{
+  return "set Output directory = bad_output\n"
+         "subsection Geometry\n set Length = 1\n set Height = 1\nend\n"
+         "subsection Mesh\n set Blocks x = 10\n set Blocks y = 10\nend\n"
+         "subsection Particles\n set Per block x = 2\n set Per block y = "
+         "2\nend\n"
+         "subsection Boundary conditions\n set Fixed x =\n set Fixed y "
+         "=\nend\n"
+         "subsection Reference solution\n set Type = none\nend\n"
+         "subsection Time\n set End time = 0.01\nend\n";
+}
+
 /// Run the scene @p prm (written to case.prm, whose Output directory is
 /// bad_output) and check that it is refused as bad input: exit code 2, a
 /// message naming case.prm and each of @p must_mention, nothing written.

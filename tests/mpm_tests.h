@@ -141,6 +141,24 @@ struct StatisticsTable
   std::vector<std::vector<double>> rows;
 };
 
+/// The energy books of a run under gravity on frictional walls: the
+/// released gravitational energy (-gravity_energy at the end) and the
+/// change of total_energy minus the walls' friction_work over it (what is
+/// conserved: kinetic + strain + gravity + dissipated - friction work).
+struct EnergyBooks
+{
+  explicit EnergyBooks(const StatisticsTable &statistics)
+  {
+    const auto total    = statistics.column("total_energy");
+    const auto friction = statistics.column("friction_work");
+    released            = -statistics.column("gravity_energy").back();
+    balance = (total.back() - friction.back() - total.front()) / released;
+  }
+
+  double released = 0;
+  double balance  = 0;
+};
+
 /// Observed rates log2(e_i / e_(i+1)) between successive meshes of the
 /// four values @p e, printed after @p what.
 inline std::vector<double>

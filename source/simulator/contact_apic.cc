@@ -167,14 +167,7 @@ namespace psmpm
                                                   Tensor<2, DIM> *,          \
                                                   const bool,                \
                                                   const bool,                \
-                                                  const bool) const;         \
-  template void ContactCoupling<DIM>::move_near_contact(State<DIM> &,        \
-                                                        const std::size_t,   \
-                                                        const std::size_t,   \
-                                                        Tensor<2, DIM> *,    \
-                                                        const bool,          \
-                                                        const bool,          \
-                                                        const bool) const;
+                                                  const bool) const;
     PSMPM_INSTANTIATE(1)
     PSMPM_INSTANTIATE(2)
     // clang-format on

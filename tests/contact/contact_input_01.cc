@@ -15,14 +15,7 @@ main(int argc, char **argv)
 {
   psmpm::MPISession mpi(argc, argv);
   std::ofstream     out("output");
-  const std::string head =
-    "set Output directory = bad_output\n"
-    "subsection Geometry\n set Length = 1\n set Height = 1\nend\n"
-    "subsection Mesh\n set Blocks x = 10\n set Blocks y = 10\nend\n"
-    "subsection Particles\n set Per block x = 2\n set Per block y = 2\nend\n"
-    "subsection Boundary conditions\n set Fixed x =\n set Fixed y =\nend\n"
-    "subsection Reference solution\n set Type = none\nend\n"
-    "subsection Time\n set End time = 0.01\nend\n";
+  const std::string head = small_bad_input_scene();
   const std::string bodies =
     "subsection Bodies\n set Number of bodies = 2\n"
     " subsection Body 1\n  set Shape = disk\n  set Center = 0.25, 0.25\n"

@@ -54,12 +54,8 @@ namespace
     for (const double v : p.volume)
       volume += v;
     const StatisticsTable statistics(directory);
-    const auto            total    = statistics.column("total_energy");
-    const auto            friction = statistics.column("friction_work");
-    const auto            gravity  = statistics.column("gravity_energy");
-    const double          released = -gravity.back();
-    const double          balance =
-      (total.back() - friction.back() - total.front()) / released;
+    const EnergyBooks     books(statistics);
+    const double          released = books.released, balance = books.balance;
     std::cout << apex_dilation << ": V/V0 " << volume / initial
               << ", energy balance " << balance << ", h_inf/h0 "
               << statistics.column("body1_y_max").back() / h0 << ", run-out "

@@ -56,17 +56,14 @@ namespace
     PSMPM_CHECK(out, status == psmpm::Simulator::Status::completed);
 
     const StatisticsTable statistics(run);
-    const auto            total    = statistics.column("total_energy");
     const auto            friction = statistics.column("friction_work");
-    const auto            gravity  = statistics.column("gravity_energy");
     const auto            x_max    = statistics.column("body1_x_max");
     const auto            x_front  = statistics.column("body1_x_front");
     const auto            y_max    = statistics.column("body1_y_max");
-    const double          released = -gravity.back();
-    const double          balance =
-      (total.back() - friction.back() - total.front()) / released;
-    const double height = y_max.back() / h0;
-    const double runout = (x_front.back() - d0) / d0;
+    const EnergyBooks     books(statistics);
+    const double          released = books.released, balance = books.balance;
+    const double          height = y_max.back() / h0;
+    const double          runout = (x_front.back() - d0) / d0;
     std::cout << basis << ": energy balance " << balance << ", h_inf/h0 "
               << height << " (law " << height_law << "), run-out " << runout
               << " (law " << runout_law << "), front particle "
