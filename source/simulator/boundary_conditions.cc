@@ -8,6 +8,7 @@
 
 #include <psmpm/base/format.h>
 #include <psmpm/simulator/boundary_conditions.h>
+#include <psmpm/simulator/function_of_time.h>
 #include <psmpm/simulator/reconstruction.h>
 #include <psmpm/simulator/state.h>
 
@@ -223,10 +224,9 @@ namespace psmpm
                                  name + "' needs " + std::to_string(dim) +
                                  " expression(s) separated by ';'."));
           // One variable, t: the velocity of a rigid boundary.
-          p.velocity = std::make_unique<FunctionParser<1>>(dim);
           try
             {
-              p.velocity->initialize("t", expressions, {{"pi", numbers::PI}});
+              p.velocity = parse_function_of_time(expressions);
             }
           catch (const std::exception &e)
             {

@@ -1,10 +1,10 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
-#include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
 #include <psmpm/simulator/driven_bodies.h>
+#include <psmpm/simulator/function_of_time.h>
 #include <psmpm/solver/grid_system.h>
 
 #include <algorithm>
@@ -38,11 +38,10 @@ namespace psmpm
           AssertThrow(expressions.size() == dim,
                       ExcMessage(entry + "needs " + std::to_string(dim) +
                                  " expression(s) of t separated by ';'."));
-          auto function = std::make_unique<FunctionParser<1>>(dim);
+          std::unique_ptr<FunctionParser<1>> function;
           try
             {
-              function->initialize("t", expressions, {{"pi", numbers::PI}});
-              // Undefined variables surface at the first evaluation.
+              function = parse_function_of_time(expressions);
               for (unsigned int d = 0; d < dim; ++d)
                 AssertThrow(std::isfinite(function->value(Point<1>(0.), d)),
                             ExcMessage("not finite at t = 0"));

@@ -45,6 +45,9 @@ main(int argc, char **argv)
     {"prescribed with one component",
      head + " set Prescribed velocity = top: -1e-3\nend\n",
      {"Boundary conditions/Prescribed velocity = top: -1e-3", "';'"}},
+    {"prescribed with an unknown variable",
+     head + " set Prescribed velocity = top: 0; -q*t\nend\n",
+     {"Boundary conditions/Prescribed velocity", "not a function of t"}},
     {"prescribed with a mass matrix",
      head + " set Prescribed velocity = top: 0; -1e-3\nend\n"
             "subsection Mass matrix\n set Type = consistent\nend\n",

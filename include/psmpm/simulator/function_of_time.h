@@ -1,0 +1,33 @@
+// ---------------------------------------------------------------------
+// psmpm: Material Point Method with Powell-Sabin splines on triangles.
+// ---------------------------------------------------------------------
+#ifndef psmpm_simulator_function_of_time_h
+#define psmpm_simulator_function_of_time_h
+
+#include <deal.II/base/function_parser.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace psmpm
+{
+  namespace Simulator
+  {
+    using namespace dealii;
+
+    /**
+     * A velocity given as a function of time (Boundary conditions/
+     * Prescribed velocity, Bodies/Body k/Velocity): one muParser
+     * expression of t per component, with the constant pi. It is
+     * evaluated once at t = 0 here, because muParser reports an unknown
+     * variable or a malformed expression only at the first evaluation,
+     * which would otherwise come in the middle of a run. Throws the
+     * parser's exception; the caller names its entry.
+     */
+    std::unique_ptr<FunctionParser<1>>
+    parse_function_of_time(const std::vector<std::string> &expressions);
+  } // namespace Simulator
+} // namespace psmpm
+
+#endif
