@@ -14,6 +14,9 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 binary=${1:-$root/build/psmpm}
 rounds=${2:-3}
 work=$(mktemp -d)
+# Each run writes its first and last VTU output (about 140 MB on the bar):
+# removed after each pair, and all of it on any exit.
+trap 'rm -rf "$work"' EXIT
 run() { # core name args...
   local core=$1 name=$2
   shift 2
@@ -48,6 +51,6 @@ for round in $(seq "$rounds"); do
     echo "round $round:"
     report "hypo_$tag"
     report "$tag"
+    rm -rf "${work:?}/hypo_$tag" "${work:?}/$tag"
   done
 done
-rm -rf "$work"

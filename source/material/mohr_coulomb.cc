@@ -629,10 +629,9 @@ namespace psmpm
           Db12 = broadcast(d[main_db + 1] - d[main_db + 2]);
           for (unsigned int i = 0; i < 8; ++i)
             {
-              edge[i] = broadcast(d[edge_block + i]);
-              edge_bits[i] =
-                Lanes::differing_bits(edge[i],
-                                      broadcast(d[edge_block + edge_size + i]));
+              edge[i]      = broadcast(d[edge_block + i]);
+              edge_two[i]  = broadcast(d[edge_block + edge_size + i]);
+              edge_bits[i] = Lanes::differing_bits(edge[i], edge_two[i]);
             }
           b0              = broadcast(1 + s.sin_psi);
           b2              = broadcast(-(1 - s.sin_psi));
@@ -641,19 +640,13 @@ namespace psmpm
           q               = broadcast(d[DerivedIndex::main_equivalent] *
                         d[DerivedIndex::main_equivalent]);
           cross           = broadcast(d[edge_equivalent]);
-          cross_bits =
-            Lanes::differing_bits(cross, broadcast(d[edge_equivalent + 1]));
-          above = broadcast((1 - sp) * (1 - sp));
-          below_bits =
-            Lanes::differing_bits(above, broadcast((1 + sp) * (1 + sp)));
-          middle_bits = Lanes::differing_bits(above, broadcast(2. * 2.));
-          two_sp      = broadcast(2 * sp);
+          cross_two       = broadcast(d[edge_equivalent + 1]);
+          cross_bits      = Lanes::differing_bits(cross, cross_two);
         }
 
         Lanes::Value one_plus_sp, one_minus_sp, a2, k, cutoff, cohesion,
-          main_inverse, Db[3], Db01, Db12, edge[8], edge_bits[8], b0, b2,
-          b_bits, main_equivalent, q, cross, cross_bits, above, below_bits,
-          middle_bits, two_sp;
+          main_inverse, Db[3], Db01, Db12, edge[8], edge_two[8], edge_bits[8],
+          b0, b2, b_bits, main_equivalent, q, cross, cross_two, cross_bits;
       };
 
       /// The sorted principal stresses @p x of the plane-strain stress t
@@ -708,10 +701,15 @@ namespace psmpm
         return Lanes::both(dm > 0, acceptable_pair(y, c));
       }
 
-      /// return_to_edge() of @p x in Lanes onto edge 2 where @p two, else
-      /// edge 1 (constants picked lane by lane), unrefined: the lanes where
+      /// return_to_edge() of @p x in Lanes, unrefined: the lanes where
       /// both multipliers are non-negative and the result accepted, with
-      /// @p y, @p e and @p d_kappa as return_plane_strain() has them.
+      /// @p y, @p e and @p d_kappa as return_plane_strain() has them. On
+      /// edge @p which (1 or 2) in both lanes, or with @p which = 0 on
+      /// edge 2 where @p two, else edge 1 (constants picked lane by lane:
+      /// a dozen instructions a constant, which the uniform cases save;
+      /// pick() and select() give the same values, bit for bit, as the
+      /// constants of one edge).
+      template <int which>
       DEAL_II_ALWAYS_INLINE inline Lanes::Mask
       edge_pair(const LaneConstants &c,
                 const Lanes::Value   x[3],
@@ -722,26 +720,62 @@ namespace psmpm
       {
         using Lanes::select;
         using Lanes::Value;
-        Value E[8];
-        for (unsigned int i = 0; i < 8; ++i)
-          E[i] = Lanes::pick(two, c.edge[i], c.edge_bits[i]);
+        // a on edge 1, b on edge 2.
+        const auto either_edge = [two](const Value a, const Value b) {
+          if constexpr (which == 0)
+            return select(two, b, a);
+          else
+            return which == 1 ? a : b;
+        };
+        // One edge's constants in place (a copy is a dozen stores and
+        // loads through the stack).
+        Value        picked[8];
+        const Value *E = which == 1 ? c.edge : c.edge_two;
+        if constexpr (which == 0)
+          {
+            for (unsigned int i = 0; i < 8; ++i)
+              picked[i] = Lanes::pick(two, c.edge[i], c.edge_bits[i]);
+            E = picked;
+          }
         const Value a0x0 = c.one_plus_sp * x[0], a2x2 = c.a2 * x[2];
         const Value r0 = a0x0 + a2x2 - c.k;
-        const Value r1 = select(two,
-                                a0x0 + c.a2 * x[1] - c.k,
-                                c.one_plus_sp * x[1] + a2x2 - c.k);
+        const Value r1 = either_edge(c.one_plus_sp * x[1] + a2x2 - c.k,
+                                     a0x0 + c.a2 * x[1] - c.k);
         const Value d0 = (r0 * E[6] - E[4] * r1) * E[7];
         const Value d1 = (E[3] * r1 - E[5] * r0) * E[7];
         for (unsigned int i = 0; i < 3; ++i)
           y[i] = x[i] - d0 * c.Db[i] - d1 * E[i];
+        // The sums with zero as in return_plane_strain() (-0 + 0 is +0).
         const Value zero  = Lanes::broadcast(0);
-        e[0]              = d0 * c.b0 + select(two, d1 * c.b0, zero);
-        e[1]              = d1 * Lanes::pick(two, c.b0, c.b_bits);
-        e[2]              = d0 * c.b2 + select(two, zero, d1 * c.b2);
-        const Value cross = Lanes::pick(two, c.cross, c.cross_bits);
+        e[0]              = d0 * c.b0 + either_edge(zero, d1 * c.b0);
+        e[1]              = d1 * either_edge(c.b0, c.b2);
+        e[2]              = d0 * c.b2 + either_edge(d1 * c.b2, zero);
+        const Value cross = which == 0 ?
+                              Lanes::pick(two, c.cross, c.cross_bits) :
+                              either_edge(c.cross, c.cross_two);
         d_kappa = Lanes::sqrt(c.q * (d0 * d0 + d1 * d1) + 2. * cross * d0 * d1);
         return Lanes::both(Lanes::both(E[7] != 0, d0 >= 0),
                            Lanes::both(d1 >= 0, acceptable_pair(y, c)));
+      }
+
+      /// edge_pair() for the lanes @p need (as bits), on the edge of each
+      /// (edge 2 where @p two): the constants of one edge where all of
+      /// these lanes return to it (the other lanes' results are not used).
+      DEAL_II_ALWAYS_INLINE inline Lanes::Mask
+      edge_pair_of(const LaneConstants &c,
+                   const Lanes::Value   x[3],
+                   const Lanes::Mask    two,
+                   const int            need,
+                   Lanes::Value         y[3],
+                   Lanes::Value         e[3],
+                   Lanes::Value        &d_kappa)
+      {
+        const int on_two = Lanes::lane_bits(two) & need;
+        if (on_two == 0)
+          return edge_pair<1>(c, x, two, y, e, d_kappa);
+        if (on_two == need)
+          return edge_pair<2>(c, x, two, y, e, d_kappa);
+        return edge_pair<0>(c, x, two, y, e, d_kappa);
       }
 
       /**
@@ -781,18 +815,22 @@ namespace psmpm
         if (Lanes::any(Lanes::both(main_first, plastic)))
           main_ok =
             Lanes::both(main_first, main_plane_pair(c, x, y, e, d_kappa));
-        if (Lanes::any(Lanes::and_not(main_first, plastic)))
+        const int need = Lanes::lane_bits(Lanes::and_not(main_first, plastic));
+        if (need != 0 && !Lanes::any(main_ok))
+          edge_ok =
+            Lanes::and_not(main_first,
+                           edge_pair_of(c, x, two, need, y, e, d_kappa));
+        else if (need != 0)
           {
             Value ye[3], ee[3], ke;
-            edge_ok =
-              Lanes::and_not(main_first, edge_pair(c, x, two, ye, ee, ke));
-            const bool some_main = Lanes::any(main_ok);
+            edge_ok = Lanes::and_not(main_first,
+                                     edge_pair_of(c, x, two, need, ye, ee, ke));
             for (unsigned int i = 0; i < 3; ++i)
               {
-                y[i] = some_main ? select(main_ok, y[i], ye[i]) : ye[i];
-                e[i] = some_main ? select(main_ok, e[i], ee[i]) : ee[i];
+                y[i] = select(main_ok, y[i], ye[i]);
+                e[i] = select(main_ok, e[i], ee[i]);
               }
-            d_kappa = some_main ? select(main_ok, d_kappa, ke) : ke;
+            d_kappa = select(main_ok, d_kappa, ke);
           }
         return Lanes::both(plastic, Lanes::either(main_ok, edge_ok));
       }
@@ -821,13 +859,41 @@ namespace psmpm
         const Value centre = 0.5 * (t[0] + t[1]);
         const Value a = centre + radius, b = centre - radius, z = t[3];
         const Mask  za = z <= a, zb = z <= b;
-        const Mask  first = ~za & ~zb, last = za & zb;
-        const Value ya    = select(first, y[1], y[0]);
-        const Value yb    = select(last, y[1], y[2]);
-        const Value yz    = select(first, y[0], select(last, y[2], y[1]));
-        const Value ea    = select(first, e[1], e[0]);
-        const Value eb    = select(last, e[1], e[2]);
-        const Value ez    = select(first, e[0], select(last, e[2], e[1]));
+        // Where z has the same place in every lane that returned (two
+        // neighbours in similar states), the values by that place: no
+        // selects.
+        const int done_bits   = Lanes::lane_bits(done);
+        const int za_bits     = Lanes::lane_bits(za),
+                  zb_bits     = Lanes::lane_bits(zb);
+        const int  first_bits = ~(za_bits | zb_bits) & done_bits;
+        const int  last_bits  = za_bits & zb_bits & done_bits;
+        Value      ya, yb, yz, ea, eb, ez;
+        const auto place = [&](const unsigned int ia,
+                               const unsigned int ib,
+                               const unsigned int iz) {
+          ya = y[ia];
+          yb = y[ib];
+          yz = y[iz];
+          ea = e[ia];
+          eb = e[ib];
+          ez = e[iz];
+        };
+        if (first_bits == 0 && last_bits == 0)
+          place(0, 2, 1);
+        else if (first_bits == done_bits)
+          place(1, 2, 0);
+        else if (last_bits == done_bits)
+          place(0, 1, 2);
+        else
+          {
+            const Mask first = ~za & ~zb, last = za & zb;
+            ya = select(first, y[1], y[0]);
+            yb = select(last, y[1], y[2]);
+            yz = select(first, y[0], select(last, y[2], y[1]));
+            ea = select(first, e[1], e[0]);
+            eb = select(last, e[1], e[2]);
+            ez = select(first, e[0], select(last, e[2], e[1]));
+          }
         const Mask  round = radius > 0;
         const Value inv   = select(round, 1 / radius, Lanes::broadcast(0));
         const Value cos2  = select(round, half * inv, Lanes::broadcast(1));
@@ -845,41 +911,19 @@ namespace psmpm
         return done;
       }
 
-      /// MohrCoulombReturn::inside_plane() in Lanes: the case of z's
-      /// place picks alpha^2 and beta of the one test alpha^2 r^2 <=
-      /// beta^2, beta >= 0.
+      /// MohrCoulombReturn::inside_plane() in Lanes, operation by
+      /// operation.
       DEAL_II_ALWAYS_INLINE inline Lanes::Mask
       inside_plane_lanes(const LaneConstants &k,
                          const Lanes::Value   c,
                          const Lanes::Value   r2,
                          const Lanes::Value   z)
       {
-        using Lanes::Mask;
-        using Lanes::select;
-        using Lanes::Value;
-        const Value dz  = z - c;
-        const Value dz2 = dz * dz;
-        // Masks combined with Lanes::both() and and_not(): see both().
-        const Mask above = Lanes::both(dz >= 0, dz2 >= r2);
-        const Mask below =
-          Lanes::and_not(above, Lanes::both(dz <= 0, dz2 >= r2));
-        const Mask middle =
-          Lanes::and_not(above, Lanes::and_not(below, Mask{-1, -1}));
-        const Value alpha2 =
-          Lanes::pick(middle,
-                      Lanes::pick(below, k.above, k.below_bits),
-                      k.middle_bits);
-        const Value beta =
-          select(above,
-                 k.k + k.one_minus_sp * c - k.one_plus_sp * z,
-                 select(below,
-                        k.k + k.one_minus_sp * z - k.one_plus_sp * c,
-                        k.k - k.two_sp * c));
-        const Value cut = k.cutoff - c;
-        using Lanes::both;
-        return both(both(both(beta >= 0, alpha2 * r2 <= beta * beta),
-                         both(z <= k.cutoff, cut >= 0)),
-                    r2 <= cut * cut);
+        const Lanes::Value radius = Lanes::sqrt(r2);
+        const Lanes::Value s1     = Lanes::max(c + radius, z);
+        const Lanes::Value s3     = Lanes::min(c - radius, z);
+        return Lanes::both(k.one_plus_sp * s1 - k.one_minus_sp * s3 - k.k <= 0,
+                           s1 <= k.cutoff);
       }
 
 
@@ -949,27 +993,26 @@ namespace psmpm
 
         /// The elastic test of a plane-strain stress from the centre c
         /// and squared radius r^2 of its in-plane Mohr circle and sigma_zz
-        /// = z, without the square root: by where z lies against c -+ r,
-        /// f <= 0 is alpha r <= beta with alpha >= 0.
+        /// = z: return_sorted()'s test, operation by operation as
+        /// return_plane_strain() forms sigma_1 and sigma_3, so that a
+        /// stress is returned exactly where that test finds it outside
+        /// (one square root, which the inlined return of a pair computes
+        /// once with the test; a test without it, by the place of z,
+        /// takes three times the instructions and differs from the
+        /// return's at round-off).
         bool
         inside_plane(const typename PlasticHypoelastic<dim>::Strength &s,
                      const double                                      c,
                      const double                                      r2,
                      const double                                      z) const
         {
-          const double sp = s.sin_phi, k = s.derived[0], t = s.tension_cutoff;
-          const auto   at_most = [r2](const double alpha, const double beta) {
-            return beta >= 0 && alpha * alpha * r2 <= beta * beta;
-          };
-          const double dz = z - c;
-          bool         inside;
-          if (dz >= 0 && dz * dz >= r2) // z = sigma_1
-            inside = at_most(1 - sp, k + (1 - sp) * c - (1 + sp) * z);
-          else if (dz <= 0 && dz * dz >= r2) // z = sigma_3
-            inside = at_most(1 + sp, k + (1 - sp) * z - (1 + sp) * c);
-          else
-            inside = at_most(2, k - 2 * sp * c);
-          return inside && z <= t && at_most(1, t - c);
+          const double radius = std::sqrt(r2);
+          const double s1     = std::max(c + radius, z);
+          const double s3     = std::min(c - radius, z);
+          return (1 + s.sin_phi) * s1 - (1 - s.sin_phi) * s3 -
+                     s.derived[k_index] <=
+                   0 &&
+                 s1 <= s.tension_cutoff;
         }
 
         bool

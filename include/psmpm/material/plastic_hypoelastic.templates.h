@@ -265,8 +265,9 @@ namespace psmpm
       bool in_plane = false;
       if constexpr (Return::returns_in_plane)
         in_plane = !softens();
-      // The elastic test inline and without the square root (most
-      // particles, most steps); the return out of line.
+      // The Return's elastic test inline (most particles, most steps;
+      // from the circle's squared radius, so that a test without the
+      // square root needs none); the return out of line.
       if (ret.inside_plane(s, centre, radius2, t[3]))
         ;
       else if (in_plane)
@@ -316,12 +317,17 @@ namespace psmpm
       tr               = de00 + de11;
       const Value w    = 0.5 * (l01 - l10);
       const Value u    = 0.25 * w * w;
-      const Value q    = select(u < 1e-6, 1 - u + u * u, 1 / (1 + u));
-      const Value cr   = (1 - u) * q;
-      const Value sn   = w * q;
-      const Value sxx  = pair(st[0][0][0], st[1][0][0]);
-      const Value syy  = pair(st[0][1][1], st[1][1][1]);
-      const Value sxy  = pair(st[0][0][1], st[1][0][1]);
+      // The division only where a lane needs it: select() waits for both
+      // operands, and a division's latency would be on every pair's
+      // chain.
+      const Mask  small  = u < 1e-6;
+      const Value series = 1 - u + u * u;
+      const Value q  = all(small) ? series : select(small, series, 1 / (1 + u));
+      const Value cr = (1 - u) * q;
+      const Value sn = w * q;
+      const Value sxx = pair(st[0][0][0], st[1][0][0]);
+      const Value syy = pair(st[0][1][1], st[1][1][1]);
+      const Value sxy = pair(st[0][0][1], st[1][0][1]);
       const Value cc = cr * cr, ss = sn * sn, cs = cr * sn;
       t[0] =
         cc * sxx + 2. * cs * sxy + ss * syy + c.lambda * tr + c.two_g * de00;
