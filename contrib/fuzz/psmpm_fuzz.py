@@ -11,12 +11,21 @@ the JSON form of the scene (structure and types, null), Gmsh files
 (truncation, duplicate or missing node ids, MeshFormat versions, element
 types, special files), checkpoints given to --resume (flipped bytes,
 truncation, another scene's) and output directories (a file in the way,
-special files, stale or garbled lock files).
+special files, stale or garbled lock files). The function expressions
+(initial velocities, prescribed and driven velocities, the stress
+function, the projected function, their constants) have one component
+made hostile (an unknown name, a syntax error, a variable the function
+does not have, an empty component, one component too many or too few, a
+constant removed or zeroed); the functions of t take a component that is
+valid at t = 0 and singular, nan, inf or huge a few steps in (these cases
+run TIME_STEPS steps of the scene's time step), the functions of x, y one
+that fails at some particles only.
 
 The oracle, for every run:
   * exit 0: summary.json valid JSON with finite numbers and status
     "completed", statistics.txt not empty, no inf or nan in a table
-    (statistics.txt, tracked_particle.txt, solver_study.tsv), every
+    (statistics.txt, tracked_particle.txt, solver_study.tsv) or in a
+    data array of a particle or grid VTU file, every
     VTU/PVD file complete, no lock file or temporary file left;
   * exit 2: one message that names the entry (or the file) the case
     changed, no deal.II source location or stack trace, and nothing
@@ -221,8 +230,11 @@ class Case:
         self.env = {}  # extra environment variables
         self.expect_code = None  # the one exit code the case must end with
         self.kept = []  # files of OUT that must exist after the run
+        self.build = None  # build() -> args, when they need a run first
 
     def argv(self, scene_path):
+        if self.args is None:
+            self.args = self.build()
         return [a.replace(b"{scene}", scene_path.encode()) for a in self.args]
 
 
@@ -788,6 +800,270 @@ def write_failure_cases(scene):
     return cases
 
 
+# Function expressions -----------------------------------------------------------
+#
+# The entries whose value is a muParser expression or a ';'-separated
+# vector of them: (path pattern, the variables: "time" for t, "space" for
+# x, y). Boundary conditions/Prescribed velocity holds one such vector per
+# boundary ('name: e1; e2, name: ...').
+FUNCTION_ENTRIES = [
+    (r"^Initial conditions/Velocity$", "space"),
+    (r"^Bodies/Body \d+/Initial velocity$", "space"),
+    (r"^Bodies/Body \d+/Velocity$", "time"),
+    (r"^Boundary conditions/Prescribed velocity$", "time"),
+    (r"^Initial conditions/Stress function$", "space"),
+    (r"^Projection/Function$", "space"),
+]
+# Steps into the run at which a time-dependent expression fails.
+FAIL_STEP = 4
+# Steps a time-dependent case runs.
+TIME_STEPS = 10
+
+
+def function_entry(path):
+    """The variables ("time" or "space") of an expression entry @p path,
+    or None."""
+    for pattern, variables in FUNCTION_ENTRIES:
+        if re.match(pattern, path):
+            return variables
+    return None
+
+
+def split_outside(text, sep):
+    """@p text split at @p sep outside parentheses ('min(t, 1)' is one)."""
+    parts, depth, start = [], 0, 0
+    for i, ch in enumerate(text):
+        if ch == "(":
+            depth += 1
+        elif ch == ")":
+            depth -= 1
+        elif ch == sep and depth == 0:
+            parts.append(text[start:i])
+            start = i + 1
+    parts.append(text[start:])
+    return parts
+
+
+def expression_groups(path, value):
+    """The vectors of an expression entry: [(prefix, [components])] with
+    prefix 'name: ' for each boundary of a prescribed velocity."""
+    if path.endswith("Prescribed velocity"):
+        groups = []
+        for item in split_outside(value, ","):
+            name, _, rest = item.partition(":")
+            groups.append((name.strip() + ": ", [c.strip() for c in rest.split(";")]))
+        return groups
+    return [("", [c.strip() for c in value.split(";")])]
+
+
+def join_groups(groups):
+    return ", ".join(prefix + "; ".join(components) for prefix, components in groups)
+
+
+def scene_dimension(scene):
+    return int(scene.values.get("Geometry/Dimension", b"2") or b"2")
+
+
+def body_x0(scene, path):
+    """An x inside the particles of the body of @p path (the middle of its
+    rectangle or disk, else of the domain)."""
+    m = re.match(r"^(Bodies/Body \d+)/", path)
+    if m:
+        corners = scene.values.get(m.group(1) + "/Corners", b"").split(b",")
+        if len(corners) == 4:
+            return 0.5 * (float(corners[0]) + float(corners[2]))
+        center = scene.values.get(m.group(1) + "/Center", b"").split(b",")
+        if len(center) == 2:
+            return float(center[0])
+    return 0.5 * float(scene.values.get("Geometry/Length", b"25") or b"25")
+
+
+def component_mutations(variables, dim):
+    """(kind, how): how(components, index) -> new components, the
+    component @p index (or the count) made hostile."""
+    def put(expression):
+        return lambda c, i: c[:i] + [expression] + c[i + 1:]
+
+    foreign = ["x", "y", "z"] if variables == "time" else \
+        (["t", "z"] if dim == 2 else ["t", "y", "z"])
+    mutations = [
+        ("unknown name", put("q*t" if variables == "time" else "q*x")),
+        ("unknown name", put("undefined_name")),
+        ("syntax error", put("sin(")),
+        ("syntax error", put("1+")),
+        ("syntax error", put("(1")),
+        ("syntax error", put("1)")),
+        ("syntax error", put("1 2")),
+        ("empty component", put("")),
+        ("one component too many", lambda c, i: c + ["0"]),
+        ("one component too few", lambda c, i: c[:-1]),
+        ("non-finite constant", put("0/0")),
+        ("non-finite constant", put("1e309")),
+        ("non-finite constant", put("sqrt(-1)")),
+    ]
+    for v in foreign:
+        mutations.append(("variable not in the function", put(v)))
+        mutations.append(("variable not in the function", put("1 + 0*" + v)))
+    return mutations
+
+
+def expression_cases(scenes):
+    """Component mutations: one component (or the count) of every
+    expression entry of every scene made hostile (by --set, one step);
+    the constants of the expressions made hostile (a constant removed or
+    zeroed)."""
+    cases = []
+    for scene in scenes:
+        dim = scene_dimension(scene)
+        for path, _ in scene.entries:
+            variables = function_entry(path)
+            value = scene.values[path].decode("utf-8", "replace")
+            entry = path.split("/")[-1].encode()
+            if variables is None or not value.strip():
+                continue
+            groups = expression_groups(path, value)
+            for k, (kind, how) in enumerate(component_mutations(variables, dim)):
+                g = k % len(groups)
+                prefix, c = groups[g]
+                new = list(groups)
+                new[g] = (prefix, how(c, k % len(c)))
+                mutated = join_groups(new)
+                cases.append(Case(
+                    "expression: " + kind,
+                    "%s: --set %s=%r" % (scene.name, path, mutated[:60]),
+                    scene,
+                    base_args(scene) + [b"--set", path.encode() + b"=" + mutated.encode()],
+                    [entry]))
+        # The constants the expressions use: one removed (an unknown name
+        # in the expression), one zeroed (L = 0: v0*sin(pi*x/L) not finite).
+        constants = scene.values.get("Initial conditions/Function constants", b"").decode()
+        pairs = [p.strip() for p in constants.split(",") if "=" in p]
+        names = [b"Function constants", b"Velocity", b"Stress function"]
+        for i, pair in enumerate(pairs):
+            name = pair.split("=")[0].strip()
+            for kind, others in [
+                    ("constant removed", pairs[:i] + pairs[i + 1:]),
+                    ("constant zero", pairs[:i] + [name + "=0"] + pairs[i + 1:]),
+                    ("constant not finite", pairs[:i] + [name + "=1e309"] + pairs[i + 1:])]:
+                text = ", ".join(others)
+                cases.append(Case(
+                    "expression: " + kind,
+                    "%s: --set Initial conditions/Function constants=%r" % (scene.name, text),
+                    scene,
+                    base_args(scene) + [b"--set", b"Initial conditions/Function constants="
+                                        + text.encode()],
+                    names))
+    return cases
+
+
+# The automatic time step of each scene (from its one-step run's screen),
+# for the time-dependent cases; None where the run fails.
+_DT = {}
+
+
+def scene_dt(scene):
+    if scene.name not in _DT:
+        fixed = float(scene.values.get("Time/Time step", b"0") or b"0")
+        dt = fixed if fixed > 0 else None
+        if dt is None:
+            d = tempfile.mkdtemp(prefix="psmpm_fuzz_dt.")
+            args = [a.replace(b"{scene}", scene.file.encode()) for a in base_args(scene)]
+            try:
+                p = subprocess.run([PSMPM.encode()] + args, cwd=d, stdout=subprocess.PIPE,
+                                   stderr=subprocess.DEVNULL, timeout=120,
+                                   env=dict(ENV, TMPDIR=d))
+                m = re.search(rb"dt = ([-+0-9.eE]+)", p.stdout)
+                dt = float(m.group(1)) if m else None
+            except subprocess.TimeoutExpired:
+                dt = None
+            shutil.rmtree(d, ignore_errors=True)
+        _DT[scene.name] = dt
+    return _DT[scene.name]
+
+
+def time_failures(variables, T, x0):
+    """(kind, expression): valid at the start, not finite (or huge) after
+    time @p T (functions of t) or at the particles beyond x = @p x0
+    (functions of x, y)."""
+    if variables == "time":
+        return [
+            ("pole 1/(t-T)", "1e-3/(t-%.17g)" % T),
+            ("sqrt(T-t)", "1e-3*sqrt(%.17g-t)" % T),
+            ("log(T-t)", "1e-3*log(%.17g-t)" % T),
+            ("exp overflow", "1e-3*exp(800*t/%.17g)" % T),
+            ("nan after T", "t > %.17g ? 0/0 : 0" % T),
+            ("inf after T", "t > %.17g ? 1/0 : 0" % T),
+            ("huge after T", "t > %.17g ? 1e300 : 0" % T),
+        ]
+    return [
+        ("pole 1/(x-x0)", "1e-3/(x-%.17g)" % x0),
+        ("sqrt(x0-x)", "1e-3*sqrt(%.17g-x)" % x0),
+        ("log(x-x0)", "1e-3*log(x-%.17g)" % x0),
+        ("nan beyond x0", "x > %.17g ? 0/0 : 0" % x0),
+        ("inf beyond x0", "x > %.17g ? 1/0 : 0" % x0),
+        ("huge beyond x0", "x > %.17g ? 1e300 : 0" % x0),
+    ]
+
+
+def time_dependent_cases(scenes):
+    """Expressions valid at t = 0 that fail later: a component of every
+    expression entry replaced by one that becomes singular, nan, inf or
+    huge a few steps into the run (functions of t; the run goes
+    TIME_STEPS steps) or at some particles only (functions of x, y)."""
+    cases = []
+    for scene in scenes:
+        dim = scene_dimension(scene)
+        # (path, value, extra arguments): the scene's expression entries
+        # and, in a scene of free bodies in multi-velocity contact, its
+        # last body made a driven one (a function of t more to fail).
+        entries = [(path, scene.values[path].decode("utf-8", "replace"), [])
+                   for path, _ in scene.entries]
+        n_bodies = int(scene.values.get("Bodies/Number of bodies", b"0") or b"0")
+        if scene.values.get("Contact/Type") == b"multi-velocity" and n_bodies >= 2 and \
+                not any(p.endswith("/Motion") for p, _ in scene.entries):
+            body = "Bodies/Body %d" % n_bodies
+            entries.append((body + "/Velocity", "; ".join(["0"] * dim),
+                            [b"--set", body.encode() + b"/Motion=prescribed"]))
+        for path, value, extra in entries:
+            variables = function_entry(path)
+            if variables is None or not value.strip():
+                continue
+            groups = expression_groups(path, value)
+            entry = path.split("/")[-1].encode()
+            x0 = body_x0(scene, path)
+            n_failures = len(time_failures(variables, 1., x0))
+            for k in range(n_failures):
+                g = k % len(groups)
+                prefix, c = groups[g]
+                i = (k // len(groups)) % len(c)
+                kind = time_failures(variables, 1., x0)[k][0]
+
+                def build(scene=scene, path=path, groups=groups, g=g, i=i, k=k,
+                          variables=variables, x0=x0, extra=extra):
+                    """The arguments: the mutated entry and, for a function
+                    of t, an end time TIME_STEPS steps in."""
+                    args = base_args(scene) + extra
+                    T = 1.
+                    if variables == "time":
+                        # A scene whose one-step run fails: a step of
+                        # END_TIME / TIME_STEPS, as if it ran.
+                        dt = scene_dt(scene) or float(END_TIME) / TIME_STEPS
+                        T = FAIL_STEP * dt
+                        args += [b"--set", b"Time/End time=%.17g" % (TIME_STEPS * dt)]
+                    prefix, c = groups[g]
+                    new = list(groups)
+                    new[g] = (prefix, c[:i] + [time_failures(variables, T, x0)[k][1]] + c[i + 1:])
+                    return args + [b"--set", path.encode() + b"=" + join_groups(new).encode()]
+
+                case = Case(("time-dependent: " if variables == "time" else "space-dependent: ")
+                            + kind,
+                            "%s: %s component %d of %s" % (scene.name, kind, i, path),
+                            scene, None, [entry])
+                case.build = build
+                cases.append(case)
+    return cases
+
+
 def all_cases(scenes, every_scene=False):
     by_name = {s.name: s for s in scenes}
     small = by_name.get("vibrating_bar_small.prm", scenes[0])
@@ -801,6 +1077,8 @@ def all_cases(scenes, every_scene=False):
         if name in by_name:
             cases += json_cases(by_name[name])
     cases += gmsh_cases(scenes)
+    cases += expression_cases(scenes)
+    cases += time_dependent_cases(scenes)
     cases += output_cases(small)
     mpm = [s for s in scenes if s.problem == "mpm"]
     for name in ("vibrating_bar_small.prm", "ring_impact.prm"):
@@ -878,6 +1156,53 @@ def table_rows(path):
     return rows, token
 
 
+def vtu_non_finite(path):
+    """The name of the first data array of the VTU file @p path (deal.II's
+    zlib-compressed base64 binary, or ASCII) with an inf or nan, or None
+    (also for a file this reader does not understand: its completeness is
+    checked elsewhere)."""
+    import base64
+    import zlib
+    try:
+        import numpy
+    except ImportError:
+        return None
+    with open(path, "rb") as f:
+        text = f.read()
+    compressed = b"vtkZLibDataCompressor" in text[:1000]
+    for m in re.finditer(rb"<DataArray([^>]*)>(.*?)</DataArray>", text, re.S):
+        attributes, data = m.group(1), m.group(2).strip()
+        t = re.search(rb'type="(Float32|Float64)"', attributes)
+        if not t:
+            continue
+        name = re.search(rb'Name="([^"]*)"', attributes)
+        name = name.group(1).decode("utf-8", "replace") if name else "Points"
+        dtype = numpy.float32 if t.group(1) == b"Float32" else numpy.float64
+        try:
+            if b'format="ascii"' in attributes:
+                values = numpy.array(data.split(), dtype=numpy.float64)
+            elif compressed:
+                # A header of uint32: blocks, block size, last block size,
+                # each block's compressed size; base64 of its own, then
+                # the blocks' base64.
+                blocks = numpy.frombuffer(base64.b64decode(data[:8])[:4], numpy.uint32)[0]
+                header_chars = -(-(3 + int(blocks)) * 4 // 3) * 4
+                header = numpy.frombuffer(base64.b64decode(data[:header_chars]), numpy.uint32)
+                raw = base64.b64decode(data[header_chars:])
+                out, at = [], 0
+                for size in header[3:3 + blocks]:
+                    out.append(zlib.decompress(raw[at:at + int(size)]))
+                    at += int(size)
+                values = numpy.frombuffer(b"".join(out), dtype)
+            else:
+                values = numpy.frombuffer(base64.b64decode(data)[4:], dtype)
+        except (ValueError, zlib.error, IndexError):
+            continue
+        if not numpy.all(numpy.isfinite(values)):
+            return name
+    return None
+
+
 def check_completed(out):
     """Failures of a run that ended with exit 0."""
     problems = []
@@ -911,6 +1236,17 @@ def check_completed(out):
                 f.seek(max(0, os.path.getsize(p) - 64))
                 if b"</VTKFile>" not in f.read():
                     problems.append("half-written: %r incomplete" % name)
+                    continue
+            # Particle and grid values of a simulation: a nan or inf (a
+            # Float32 overflow too) is no result. (An l2 projection of a
+            # function beyond the Float32 range, such as 1e308, is
+            # projected exactly in double and accepted: its
+            # projection.vtu is not checked.)
+            if name.endswith(b".vtu") and name.startswith((b"particles-", b"grid-")):
+                array = vtu_non_finite(p)
+                if array:
+                    problems.append("silent: exit 0 with inf or nan in %s of %s"
+                                    % (array, name.decode("utf-8", "replace")))
     return problems
 
 

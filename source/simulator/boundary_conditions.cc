@@ -234,7 +234,8 @@ namespace psmpm
                           ExcMessage(
                             "Boundary conditions/Prescribed velocity = " +
                             prescribed_text + ": '" + value + "' for '" + name +
-                            "' is not a function of t (" + e.what() + ")."));
+                            "' is not a function of t (" +
+                            Utilities::trim(e.what()) + ")."));
             }
           for (const auto &q : prescribed)
             AssertThrow(q.name != name,

@@ -1,9 +1,13 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
 
+#include <psmpm/base/format.h>
 #include <psmpm/simulator/function_of_time.h>
+
+#include <cmath>
 
 namespace psmpm
 {
@@ -15,7 +19,14 @@ namespace psmpm
       auto function = std::make_unique<FunctionParser<1>>(expressions.size());
       function->initialize("t", expressions, {{"pi", numbers::PI}});
       for (unsigned int d = 0; d < expressions.size(); ++d)
-        function->value(Point<1>(0.), d);
+        {
+          const double v = function->value(Point<1>(0.), d);
+          AssertThrow(std::isfinite(v),
+                      ExcMessage("component " + std::to_string(d + 1) + ", '" +
+                                 expressions[d] + "', is " +
+                                 (std::isnan(v) ? "nan" : prm_value(v)) +
+                                 " at t = 0"));
+        }
       return function;
     }
   } // namespace Simulator

@@ -6,6 +6,8 @@
 
 #include <psmpm/simulator/initial_conditions.h>
 
+#include <algorithm>
+
 namespace psmpm
 {
   namespace Simulator
@@ -80,6 +82,20 @@ namespace psmpm
       velocity_expression = prm.get("Velocity");
       velocity_constants  = prm.get("Function constants");
       prm.leave_subsection();
+      const std::string constants =
+        " (Initial conditions/Function constants = '" + velocity_constants +
+        "')";
+      velocity_entries.assign(1,
+                              "Initial conditions/Velocity = '" +
+                                velocity_expression + "'" + constants);
+      for (const auto &body : bodies.bodies)
+        {
+          velocity_entries.resize(
+            std::max<std::size_t>(velocity_entries.size(), body.number + 1));
+          velocity_entries[body.number] = body.name() +
+                                          "/Initial velocity = '" +
+                                          body.velocity + "'" + constants;
+        }
       stress.parse_parameters(prm, materials, bodies, gravity);
     }
 
@@ -109,6 +125,14 @@ namespace psmpm
                           body.velocity,
                           body.name() + "/Initial velocity",
                           body.number);
+    }
+
+    template <int dim>
+    std::string
+    InitialConditions<dim>::velocity_entry(const unsigned int body_id) const
+    {
+      return body_id < velocity_entries.size() ? velocity_entries[body_id] :
+                                                 "Initial conditions/Velocity";
     }
 
     template struct InitialConditions<1>;

@@ -85,7 +85,9 @@ namespace psmpm
       std::string where;
       if (bad >= 0)
         {
-          where = "(" + prm_value(particles.position[bad][0]);
+          where = initial_conditions.velocity_entry(particles.body_id[bad]) +
+                  " is not finite: the particle at (" +
+                  prm_value(particles.position[bad][0]);
           for (unsigned int d = 1; d < dim; ++d)
             where += ", " + prm_value(particles.position[bad][d]);
           where += ") gives " + prm_value(particles.velocity[bad][0]);
@@ -95,12 +97,7 @@ namespace psmpm
       // The first rank with a bad particle speaks for all.
       const auto all = Utilities::MPI::all_gather(comm, where);
       for (const auto &w : all)
-        AssertThrow(w.empty(),
-                    ExcMessage("Initial conditions/Velocity = '" +
-                               initial_conditions.velocity_expression +
-                               "' (Function constants = '" +
-                               initial_conditions.velocity_constants +
-                               "') is not finite: the particle at " + w + "."));
+        AssertThrow(w.empty(), ExcMessage(w + "."));
     }
 
     template RunSize

@@ -22,8 +22,10 @@ namespace psmpm
      * expression of t per component, with the constant pi. It is
      * evaluated once at t = 0 here, because muParser reports an unknown
      * variable or a malformed expression only at the first evaluation,
-     * which would otherwise come in the middle of a run. Throws the
-     * parser's exception; the caller names its entry.
+     * which would otherwise come in the middle of a run; a component that
+     * is not finite at t = 0 (0/0, 1e309) is refused too. Throws the
+     * parser's exception or ExcMessage naming the component; the caller
+     * names its entry.
      */
     std::unique_ptr<FunctionParser<1>>
     parse_function_of_time(const std::vector<std::string> &expressions);

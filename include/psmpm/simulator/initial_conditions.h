@@ -14,6 +14,7 @@
 #include <psmpm/simulator/initial_stress.h>
 
 #include <string>
+#include <vector>
 
 namespace psmpm
 {
@@ -55,9 +56,21 @@ namespace psmpm
                      const Particles::Bodies     &bodies,
                      const bool                   affine) const;
 
+      /**
+       * The entry and value that give the initial velocity of the
+       * particles of body @p body_id (0 without Bodies), with the
+       * Function constants, for a message about a value it gave:
+       * "Bodies/Body 2/Initial velocity = '...' (Initial conditions/
+       * Function constants = '...')".
+       */
+      std::string
+      velocity_entry(const unsigned int body_id) const;
+
       /// Initial conditions/Velocity and Function constants.
       std::string velocity_expression;
       std::string velocity_constants;
+      /// velocity_entry() of each body id.
+      std::vector<std::string> velocity_entries;
       /// Initial conditions/Stress.
       InitialStress<dim> stress;
     };
