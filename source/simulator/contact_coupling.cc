@@ -371,7 +371,7 @@ namespace psmpm
           const double          V    = particles.volume[p];
           const Tensor<1, dim>  mv   = m * particles.velocity[p];
           const Tensor<1, dim>  mg   = m * state.gravity;
-          const auto           &s    = particles.stress[p];
+          const auto           &s    = state.stress_for_forces()[p];
           const double         *phi  = &state.shape_values[p * n];
           const Tensor<1, dim> *grad = state.gradients(p, cell);
           for (unsigned int k = 0; k < n; ++k)

@@ -49,12 +49,13 @@ namespace psmpm
         double            *lumped     = cells.lumped.data();
         double            *mass_mat   = cells.mass.data();
         Tensor<1, dim>    *rhs        = cells.rhs.data();
+        const SymmetricTensor<2, dim> *stress = state.stress_for_forces();
         for (std::size_t p = first; p < last; ++p)
           {
             const unsigned int             cell = particles.cell[p];
             const unsigned int             base = cell * n;
             const double                   m    = particles.mass[p];
-            const SymmetricTensor<2, dim> &s    = particles.stress[p];
+            const SymmetricTensor<2, dim> &s    = stress[p];
             // Forces alone: no 0 * v term (which would carry a non-finite
             // velocity into the forces).
             const Tensor<1, dim> momentum =

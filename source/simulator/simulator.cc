@@ -482,6 +482,7 @@ namespace psmpm
       // Otherwise the scheme may locate them chunk by chunk as it moves
       // them; if it did not, they are located here.
       transfer.relocate_with(transfer.moves_grid() ? nullptr : &relocation);
+      transfer.prepare_step(state);
       if (!transfer.step(state, monitor, timer))
         return;
       record.total_iterations += state.grid->statistics().iterations;

@@ -29,6 +29,17 @@ namespace psmpm
         "automatic: the basis' measured default (apic for powell-sabin with "
         "lumped mass, musl otherwise; doc/transfers.md); " +
           TransferSchemeRegistry<dim>::instance().documentation());
+      prm.declare_entry(
+        "Volumetric strain",
+        "particle",
+        Patterns::Selection("particle|cell average"),
+        "particle: each particle's strain increment from the grid velocity "
+        "gradient at the particle; cell average: its volumetric part "
+        "replaced by the volume-weighted mean over the particles of the "
+        "same body in the same cell (F-bar, against volumetric locking of "
+        "isochoric plastic flow and nearly incompressible materials with "
+        "Powell-Sabin; doc/geomechanics.md). The same on P1, whose "
+        "gradients are constant on cells: the average is skipped there.");
       TransferSchemeRegistry<dim>::instance().declare_parameters(prm);
       Reconstruction<dim>::declare_parameters(prm);
       prm.leave_subsection();

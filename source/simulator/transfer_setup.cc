@@ -38,6 +38,7 @@ namespace psmpm
     {
       name                = prm.get("Scheme");
       reconstruction_name = prm.get("Reconstruction");
+      cell_average_volume = prm.get("Volumetric strain") == "cell average";
       reconstruction.reset();
       if (reconstruction_name != "particles")
         reconstruction =
@@ -159,6 +160,7 @@ namespace psmpm
              "Mass matrix/Type",
              mass_matrix);
       refuse(state.space->verified_transfers(), "Transfer/Scheme", name);
+      scheme->average_volumetric_strain(cell_average_volume);
       // A reconstruction names what it was verified with as well.
       state.reconstruction.reset();
       if (reconstruction_name != "particles")

@@ -6,7 +6,9 @@
 // resumed from its checkpoint repeats the run in one go bit for bit: the
 // strip footing of prm/strip_footing_body.prm (the footing Body 2 driven
 // down into the soil) on h = B/4 to t = 0.3 s, linear (musl) and
-// Powell-Sabin (apic), with Contact/Driven body nodes = particle mass
+// Powell-Sabin (apic; with the scene's Transfer/Volumetric strain =
+// cell average, whose cell sums stay on the cell's rank and which keeps
+// nothing between steps), with Contact/Driven body nodes = particle mass
 // and geometry (the nodes' shares are sums over the cells, added up
 // over the ranks; the footing's displacement travels in the
 // checkpoint). The driven particles are ordinary particles between the

@@ -5,8 +5,9 @@
 // on two MPI ranks (the .output and .mpirun=2.output files are
 // identical): the vertical cut of prm/vertical_cut.prm at 1.3 H_c (Tresca
 // from the geostatic stress, rough base), 0.3 s in fixed steps, with the
-// linear basis (lumped, MUSL) and Powell-Sabin (lumped, APIC): the
-// plastic state moves between ranks with its particles.
+// linear basis (lumped, MUSL) and Powell-Sabin (lumped, APIC; also with
+// Transfer/Volumetric strain = cell average): the plastic state moves
+// between ranks with its particles.
 #include "../mpm_tests.h"
 
 int
@@ -15,11 +16,17 @@ main(int argc, char **argv)
   psmpm::MPISession mpi(argc, argv);
   std::ofstream     out = root_output();
   const double rho = 2000, g = 9.81, H = 1, c_u = rho * g * H / (3.78 * 1.3);
-  for (const std::string basis : {"linear", "powell-sabin"})
+  // Powell-Sabin also with the cell-averaged volumetric strain, whose
+  // cell sums stay on the rank that owns the cell.
+  for (const std::string basis :
+       {"linear", "powell-sabin", "powell-sabin, cell average"})
     {
-      auto solver =
+      const bool average = basis.find("cell average") != std::string::npos;
+      auto       solver =
         make_scene_solver("vertical_cut.prm",
-                          {"Basis/Type=" + basis,
+                          {"Basis/Type=" + basis.substr(0, basis.find(',')),
+                           std::string("Transfer/Volumetric strain=") +
+                             (average ? "cell average" : "particle"),
                            "Mesh/Blocks x=24",
                            "Mesh/Blocks y=9",
                            "Material/Cohesion=" + std::to_string(c_u),

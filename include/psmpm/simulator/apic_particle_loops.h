@@ -223,7 +223,7 @@ namespace psmpm
               forces_pairs(n,
                            m * state.gravity,
                            particles.volume[p],
-                           particles.stress[p],
+                           state.stress_for_forces()[p],
                            phi,
                            state.gradients(p, cell),
                            sums.forces + base);
@@ -241,7 +241,7 @@ namespace psmpm
             if constexpr (forces)
               {
                 const double                   V        = particles.volume[p];
-                const SymmetricTensor<2, dim> &s        = particles.stress[p];
+                const SymmetricTensor<2, dim> &s        = state.stress_for_forces()[p];
                 const Tensor<1, dim>           external = m * state.gravity;
                 const Tensor<1, dim>          *grad = state.gradients(p, cell);
                 for (unsigned int k = 0; k < n; ++k)

@@ -58,6 +58,15 @@ namespace psmpm
       void
       evaluate_shape_functions(const std::size_t first, const std::size_t last);
 
+      /// The particle stresses the internal forces take: force_stress if
+      /// a step prepared it, else the particles' own.
+      const SymmetricTensor<2, dim> *
+      stress_for_forces() const
+      {
+        return force_stress.empty() ? particles.stress.data() :
+                                      force_stress.data();
+      }
+
       /**
        * The dofs_per_cell() basis gradients at particle @p p, which lies
        * in cell @p cell (the loops have read it already): one set per cell
@@ -155,6 +164,15 @@ namespace psmpm
        * particles between two steps.
        */
       bool forces_in_cells = false;
+      /**
+       * With Transfer/Volumetric strain = cell average, from the start of
+       * a step until its material update: each particle's stress with
+       * its in-plane mean replaced by the mean of its cell and body
+       * (VolumetricAveraging::average_stress()), so that the internal
+       * forces are work-conjugate to the averaged strain increments
+       * (B-bar). Empty otherwise (stress_for_forces()).
+       */
+      std::vector<SymmetricTensor<2, dim>> force_stress;
 
     private:
       /// Scratch of evaluate_shape_functions() (the values it discards

@@ -13,8 +13,10 @@
 #include <psmpm/simulator/particle_relocation.h>
 #include <psmpm/simulator/stability_monitor.h>
 #include <psmpm/simulator/state.h>
+#include <psmpm/simulator/volumetric_averaging.h>
 
 #include <array>
+#include <memory>
 
 namespace psmpm
 {
@@ -156,6 +158,25 @@ namespace psmpm
         relocated_now    = false;
       }
 
+      /// Whether move_and_update_material() gives each particle the mean
+      /// volumetric strain of its cell and body (Transfer/Volumetric
+      /// strain = cell average; VolumetricAveraging).
+      void
+      average_volumetric_strain(const bool average)
+      {
+        averaging.reset(average ? new VolumetricAveraging<dim>() : nullptr);
+      }
+
+      /// Before step(): with the volumetric average, the stresses of the
+      /// step's internal forces (State::force_stress), on the cells the
+      /// particles are in now.
+      void
+      prepare_step(State<dim> &state)
+      {
+        if (averaging && !state.gradients_per_cell)
+          averaging->average_stress(state, state.force_stress);
+      }
+
       /// Whether the last step located its particles (relocate_with());
       /// schemes that move them otherwise leave it to the simulator.
       bool
@@ -271,6 +292,10 @@ namespace psmpm
       UpdatedChunkObserver<dim>        *chunk_observer = nullptr;
       ParticleRelocation<dim>          *relocation     = nullptr;
       bool                              relocated_now  = false;
+      /// Cell-averaged volumetric strain (nullptr: off), which needs the
+      /// increments of all particles before the first update.
+      std::unique_ptr<VolumetricAveraging<dim>> averaging;
+      std::vector<Tensor<2, dim>>               all_increments;
 
       /// The located particles [first, last) of update_in_chunks() into
       /// the cell arrays (@p kernels), without those that left this rank.

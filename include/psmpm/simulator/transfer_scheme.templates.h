@@ -21,8 +21,16 @@ namespace psmpm
                                           Kernels          &kernels)
     {
       const std::size_t n = state.particles.size();
-      const bool        accumulate =
-        relocation != nullptr && kernels.accumulates(state);
+      // A cell's mean strain needs all its particles' increments before
+      // the first of them is updated: then one pass moves them all.
+      // Gradients constant on cells (P1) give every particle of a cell
+      // the mean already. The forces of the next step then take the
+      // stresses averaged on the cells the particles are in by then
+      // (prepare_step()): not summed here.
+      const bool average = averaging && !state.gradients_per_cell;
+      state.force_stress.clear();
+      const bool accumulate =
+        relocation != nullptr && kernels.accumulates(state) && !average;
       PhaseTimer::Laps laps(timer);
       if (relocation != nullptr)
         relocation->begin(state);
@@ -31,14 +39,27 @@ namespace psmpm
           kernels.start_cells(state);
           laps.lap("particle to grid");
         }
+      if (average)
+        {
+          all_increments.resize(n);
+          for (std::size_t first = 0; first < n; first += chunk)
+            kernels.move(state,
+                         first,
+                         std::min(n, first + chunk),
+                         all_increments.data() + first);
+          averaging->apply(state, all_increments.data());
+        }
       for (std::size_t first = 0; first < n; first += chunk)
         {
           const std::size_t last = std::min(n, first + chunk);
-          kernels.move(state, first, last, chunk_increments.data());
+          Tensor<2, dim>   *increments =
+            average ? all_increments.data() + first : chunk_increments.data();
+          if (!average)
+            kernels.move(state, first, last, increments);
           update_material(state,
                           first,
                           last,
-                          chunk_increments.data(),
+                          increments,
                           chunk_volume_ratio.data(),
                           monitor);
           if (chunk_observer != nullptr)

@@ -68,6 +68,8 @@ namespace psmpm
       std::string name;
       /// Transfer/Reconstruction ("particles": none).
       std::string                          reconstruction_name = "particles";
+      /// Transfer/Volumetric strain = cell average.
+      bool                                 cell_average_volume = false;
       std::unique_ptr<TransferScheme<dim>> scheme;
       /// Created by parse_parameters(), moved into the state by
       /// check_and_install().

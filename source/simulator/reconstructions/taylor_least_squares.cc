@@ -667,7 +667,7 @@ namespace psmpm
                            m,
                            momentum + force_weight * m * state.gravity,
                            stress_weight * particles.volume[p],
-                           particles.stress[p],
+                           state.stress_for_forces()[p],
                            &state.shape_values[p * n],
                            state.gradients(p, cell),
                            &cells.lumped[base],
@@ -715,7 +715,7 @@ namespace psmpm
             for (unsigned int i = begin; i < end; ++i)
               {
                 const double *psi = &scratch_psi[(i - begin) * n_max];
-                const auto   &s   = particles.stress[order[i]];
+                const auto   &s   = state.stress_for_forces()[order[i]];
                 for (unsigned int r = 0; r < k; ++r)
                   sigma[r] += psi[r] * s;
                 sigma[k] += s;
