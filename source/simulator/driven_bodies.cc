@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/base/format.h>
 #include <psmpm/simulator/driven_bodies.h>
 #include <psmpm/simulator/function_of_time.h>
 #include <psmpm/solver/grid_system.h>
@@ -21,6 +22,7 @@ namespace psmpm
       driven.assign(bodies.size(), 0);
       functions.clear();
       functions.resize(bodies.size());
+      entries.assign(bodies.size(), std::string());
       n_driven = 0;
       for (const auto &body : bodies)
         {
@@ -54,6 +56,8 @@ namespace psmpm
             }
           driven[body.number - 1]    = 1;
           functions[body.number - 1] = std::move(function);
+          entries[body.number - 1] =
+            body.name() + "/Velocity = '" + body.motion_velocity + "'";
           ++n_driven;
         }
       AssertThrow(n_driven == 0 || n_driven < bodies.size(),
@@ -111,6 +115,27 @@ namespace psmpm
       for (unsigned int d = 0; d < dim; ++d)
         v[d] = functions[b]->value(Point<1>(t), d);
       return v;
+    }
+
+    template <int dim>
+    std::string
+    DrivenBodies<dim>::non_finite_velocity(const double t,
+                                           const double dt) const
+    {
+      for (unsigned int b = 0; b < functions.size(); ++b)
+        if (functions[b])
+          for (const double at : {t + dt / 2, t + dt})
+            {
+              const Tensor<1, dim> v = velocity(b, at);
+              for (unsigned int d = 0; d < dim; ++d)
+                if (!std::isfinite(v[d]))
+                  return entries[b] + " is not finite at t = " + prm_value(at) +
+                         " (component " + std::to_string(d + 1) + ": " +
+                         (std::isnan(v[d]) ? std::string("nan") :
+                                             prm_value(v[d])) +
+                         ")";
+            }
+      return std::string();
     }
 
     template <int dim>

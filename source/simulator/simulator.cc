@@ -482,6 +482,17 @@ namespace psmpm
       // Otherwise the scheme may locate them chunk by chunk as it moves
       // them; if it did not, they are located here.
       transfer.relocate_with(transfer.moves_grid() ? nullptr : &relocation);
+      // A velocity of t that is not finite at the times this step takes
+      // it stops the run naming its entry, before it reaches the grid
+      // (every rank evaluates the same functions).
+      const std::string bad =
+        boundary_conditions.non_finite_velocity(state.time + dt) +
+        contact.driven_bodies.non_finite_velocity(state.time, dt);
+      if (!bad.empty())
+        {
+          monitor.report(Failure::non_finite, bad);
+          return;
+        }
       transfer.prepare_step(state);
       if (!transfer.step(state, monitor, timer))
         return;

@@ -206,6 +206,12 @@ namespace psmpm
       double
       monitored_energy(const double total, const unsigned int step);
 
+      /// The entry of the first prescribed velocity that is not finite at
+      /// @p t (the end of the step that imposes it), with that time;
+      /// empty if none.
+      std::string
+      non_finite_velocity(const double t) const;
+
       /// The accumulated work (checkpoints).
       void
       save(Archive &archive) const;

@@ -56,6 +56,12 @@ namespace psmpm
       Tensor<1, dim>
       velocity(const unsigned int b, const double t) const;
 
+      /// For a step from @p t over @p dt: the entry of the first driven
+      /// body whose velocity is not finite at a time the step takes it
+      /// at (t + dt/2, t + dt), with that time; empty if none.
+      std::string
+      non_finite_velocity(const double t, const double dt) const;
+
       /// At the start of a step from t = state.time over state.dt: the
       /// driven particles (in the particle set's current order), their
       /// positions x^n, and each driven body's v(t^{n+1}) and midpoint
@@ -120,6 +126,8 @@ namespace psmpm
     private:
       std::vector<char>                               driven;
       std::vector<std::unique_ptr<FunctionParser<1>>> functions;
+      /// Per body: "Bodies/Body k/Velocity = '...'" (driven ones).
+      std::vector<std::string> entries;
       unsigned int                                    n_driven = 0;
       /// Per step: the driven particles (ascending), their positions at
       /// the start of the step, and per body v(t^{n+1}) and v(t^n+dt/2).
