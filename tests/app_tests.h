@@ -82,4 +82,21 @@ check_bad_input(std::ostream                   &out,
     out << "  message: " << message;
 }
 
+/// A case of check_bad_inputs(): its name, the scene text and what the
+/// message must name.
+struct BadInputCase
+{
+  std::string              name;
+  std::string              prm;
+  std::vector<std::string> must_mention;
+};
+
+/// check_bad_input() for each of @p cases, in order.
+inline void
+check_bad_inputs(std::ostream &out, const std::vector<BadInputCase> &cases)
+{
+  for (const auto &c : cases)
+    check_bad_input(out, c.name, c.prm, c.must_mention);
+}
+
 #endif

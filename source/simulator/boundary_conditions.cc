@@ -252,16 +252,13 @@ namespace psmpm
     BoundaryConditions<dim>::non_finite_velocity(const double t) const
     {
       for (const auto &p : prescribed)
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double v = p.velocity->value(Point<1>(t), d);
-            if (!p.free[d] && !std::isfinite(v))
-              return "Boundary conditions/Prescribed velocity: '" +
-                     p.expression + "' for '" + p.name +
-                     "' is not finite at t = " + prm_value(t) +
-                     " (component " + std::to_string(d + 1) + ": " +
-                     (std::isnan(v) ? std::string("nan") : prm_value(v)) + ")";
-          }
+        {
+          const std::string bad =
+            non_finite_at(*p.velocity, t, p.free.data());
+          if (!bad.empty())
+            return "Boundary conditions/Prescribed velocity: '" +
+                   p.expression + "' for '" + p.name + "'" + bad;
+        }
       return std::string();
     }
 

@@ -3,7 +3,6 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/utilities.h>
 
-#include <psmpm/base/format.h>
 #include <psmpm/simulator/driven_bodies.h>
 #include <psmpm/simulator/function_of_time.h>
 #include <psmpm/solver/grid_system.h>
@@ -44,9 +43,6 @@ namespace psmpm
           try
             {
               function = parse_function_of_time(expressions);
-              for (unsigned int d = 0; d < dim; ++d)
-                AssertThrow(std::isfinite(function->value(Point<1>(0.), d)),
-                            ExcMessage("not finite at t = 0"));
             }
           catch (const std::exception &e)
             {
@@ -126,14 +122,9 @@ namespace psmpm
         if (functions[b])
           for (const double at : {t + dt / 2, t + dt})
             {
-              const Tensor<1, dim> v = velocity(b, at);
-              for (unsigned int d = 0; d < dim; ++d)
-                if (!std::isfinite(v[d]))
-                  return entries[b] + " is not finite at t = " + prm_value(at) +
-                         " (component " + std::to_string(d + 1) + ": " +
-                         (std::isnan(v[d]) ? std::string("nan") :
-                                             prm_value(v[d])) +
-                         ")";
+              const std::string bad = non_finite_at(*functions[b], at);
+              if (!bad.empty())
+                return entries[b] + bad;
             }
       return std::string();
     }

@@ -29,5 +29,21 @@ namespace psmpm
         }
       return function;
     }
+
+    std::string
+    non_finite_at(const FunctionParser<1> &function,
+                  const double             t,
+                  const bool              *skip)
+    {
+      for (unsigned int d = 0; d < function.n_components; ++d)
+        {
+          const double v = function.value(Point<1>(t), d);
+          if ((skip == nullptr || !skip[d]) && !std::isfinite(v))
+            return " is not finite at t = " + prm_value(t) + " (component " +
+                   std::to_string(d + 1) + ": " +
+                   (std::isnan(v) ? std::string("nan") : prm_value(v)) + ")";
+        }
+      return std::string();
+    }
   } // namespace Simulator
 } // namespace psmpm

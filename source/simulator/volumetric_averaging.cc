@@ -23,9 +23,10 @@ namespace psmpm
     }
 
     template <int dim>
+    template <typename T>
     void
-    VolumetricAveraging<dim>::apply(const State<dim> &state,
-                                    Tensor<2, dim>   *increments)
+    VolumetricAveraging<dim>::replace_mean_trace(const State<dim> &state,
+                                                 T                *values)
     {
       const auto       &particles = state.particles;
       const std::size_t n         = start_sums(state);
@@ -33,16 +34,24 @@ namespace psmpm
         {
           const std::size_t s = slot(state, p);
           volume[s] += particles.volume[p];
-          trace[s] += particles.volume[p] * dealii::trace(increments[p]);
+          trace[s] += particles.volume[p] * dealii::trace(values[p]);
         }
       for (std::size_t p = 0; p < n; ++p)
         {
           const std::size_t s = slot(state, p);
           const double      shift =
-            (trace[s] / volume[s] - dealii::trace(increments[p])) / dim;
+            (trace[s] / volume[s] - dealii::trace(values[p])) / dim;
           for (unsigned int d = 0; d < dim; ++d)
-            increments[p][d][d] += shift;
+            values[p][d][d] += shift;
         }
+    }
+
+    template <int dim>
+    void
+    VolumetricAveraging<dim>::apply(const State<dim> &state,
+                                    Tensor<2, dim>   *increments)
+    {
+      replace_mean_trace(state, increments);
     }
 
     template <int dim>
@@ -51,24 +60,8 @@ namespace psmpm
       const State<dim>                     &state,
       std::vector<SymmetricTensor<2, dim>> &averaged)
     {
-      const auto       &particles = state.particles;
-      const std::size_t n         = start_sums(state);
-      for (std::size_t p = 0; p < n; ++p)
-        {
-          const std::size_t s = slot(state, p);
-          volume[s] += particles.volume[p];
-          trace[s] += particles.volume[p] * dealii::trace(particles.stress[p]);
-        }
-      averaged.resize(n);
-      for (std::size_t p = 0; p < n; ++p)
-        {
-          const std::size_t s = slot(state, p);
-          const double      shift =
-            (trace[s] / volume[s] - dealii::trace(particles.stress[p])) / dim;
-          averaged[p] = particles.stress[p];
-          for (unsigned int d = 0; d < dim; ++d)
-            averaged[p][d][d] += shift;
-        }
+      averaged = state.particles.stress;
+      replace_mean_trace(state, averaged.data());
     }
 
     template class VolumetricAveraging<1>;

@@ -33,13 +33,8 @@ main(int argc, char **argv)
     "set Output directory = bad_output\n"
     "subsection Time\n set End time = 1e-4\nend\n"
     "subsection Boundary conditions\n set Prescribed velocity = ";
-  struct Case
-  {
-    std::string              name;
-    std::string              prm;
-    std::vector<std::string> must_mention;
-  };
-  const std::vector<Case> cases = {
+
+  const std::vector<BadInputCase> cases = {
     {"body velocity nan beyond x = 0.5",
      body("x > 0.5 ? 0/0 : 0; 0"),
      {"Bodies/Body 1/Initial velocity = 'x > 0.5 ? 0/0 : 0; 0'",
@@ -75,6 +70,5 @@ main(int argc, char **argv)
        "subsection Material\n set Model = hypoelastic\nend\n",
      {"Initial conditions/Stress function = '0; 0; 0'", "4 expressions"}},
   };
-  for (const auto &c : cases)
-    check_bad_input(out, c.name, c.prm, c.must_mention);
+  check_bad_inputs(out, cases);
 }

@@ -15,13 +15,8 @@ main(int argc, char **argv)
   const std::string head = "set Output directory = bad_output\n"
                            "subsection Body force\n set Gravity = 0, -9.81\n"
                            "end\n";
-  struct Case
-  {
-    std::string              name;
-    std::string              prm;
-    std::vector<std::string> must_mention;
-  };
-  const std::vector<Case> cases = {
+
+  const std::vector<BadInputCase> cases = {
     {"geostatic with neo-hookean",
      head + "subsection Material\n set Model = neo-hookean\nend\n"
             "subsection Initial conditions\n set Stress = geostatic\nend\n",
@@ -55,6 +50,5 @@ main(int argc, char **argv)
      "subsection Initial conditions\n set Stress = geostatic\nend\n",
      {"Initial conditions/Stress = geostatic", "Body force/Gravity"}},
   };
-  for (const auto &c : cases)
-    check_bad_input(out, c.name, c.prm, c.must_mention);
+  check_bad_inputs(out, cases);
 }

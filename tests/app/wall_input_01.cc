@@ -17,13 +17,8 @@ main(int argc, char **argv)
   const std::string head = "set Output directory = bad_output\n"
                            "subsection Time\n set End time = 1e-4\nend\n"
                            "subsection Boundary conditions\n";
-  struct Case
-  {
-    std::string              name;
-    std::string              prm;
-    std::vector<std::string> must_mention;
-  };
-  const std::vector<Case> cases = {
+
+  const std::vector<BadInputCase> cases = {
     {"negative mu",
      head + " set Friction coefficient = bottom: -0.3\nend\n",
      {"Boundary conditions/Friction coefficient = bottom: -0.3",
@@ -61,6 +56,5 @@ main(int argc, char **argv)
      head + " set Boundary parts = footing: top, 100, 200\nend\n",
      {"Boundary conditions/Boundary parts", "footing", "[100, 200]"}},
   };
-  for (const auto &c : cases)
-    check_bad_input(out, c.name, c.prm, c.must_mention);
+  check_bad_inputs(out, cases);
 }

@@ -29,6 +29,18 @@ namespace psmpm
      */
     std::unique_ptr<FunctionParser<1>>
     parse_function_of_time(const std::vector<std::string> &expressions);
+
+    /**
+     * For the run's check before a step: " is not finite at t = ...
+     * (component d: value)" for the first component of @p function that
+     * is not finite at @p t (a component d with @p skip and skip[d] is
+     * not looked at), empty if every one is. The caller puts its entry
+     * in front.
+     */
+    std::string
+    non_finite_at(const FunctionParser<1> &function,
+                  const double             t,
+                  const bool              *skip = nullptr);
   } // namespace Simulator
 } // namespace psmpm
 

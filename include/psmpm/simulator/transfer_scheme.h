@@ -173,7 +173,7 @@ namespace psmpm
       void
       prepare_step(State<dim> &state)
       {
-        if (averaging && !state.gradients_per_cell)
+        if (averages(state))
           averaging->average_stress(state, state.force_stress);
       }
 
@@ -186,6 +186,15 @@ namespace psmpm
       }
 
     protected:
+      /// Whether the volumetric average applies: asked for, and gradients
+      /// not constant on cells (P1's strain is the mean of its cell
+      /// already).
+      bool
+      averages(const State<dim> &state) const
+      {
+        return averaging && !state.gradients_per_cell;
+      }
+
       /// state.grid->solve(@p solution), a CG failure reported to the
       /// monitor (returns false) instead of thrown.
       static bool

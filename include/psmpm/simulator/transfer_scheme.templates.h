@@ -22,12 +22,11 @@ namespace psmpm
     {
       const std::size_t n = state.particles.size();
       // A cell's mean strain needs all its particles' increments before
-      // the first of them is updated: then one pass moves them all.
-      // Gradients constant on cells (P1) give every particle of a cell
-      // the mean already. The forces of the next step then take the
-      // stresses averaged on the cells the particles are in by then
-      // (prepare_step()): not summed here.
-      const bool average = averaging && !state.gradients_per_cell;
+      // the first of them is updated: then one pass moves them all. The
+      // forces of the next step then take the stresses averaged on the
+      // cells the particles are in by then (prepare_step()): not summed
+      // here.
+      const bool average = averages(state);
       state.force_stress.clear();
       const bool accumulate =
         relocation != nullptr && kernels.accumulates(state) && !average;

@@ -71,6 +71,12 @@ namespace psmpm
       /// Per cell and body: sum of V_p and of V_p tr(dt L_p) (or V_p m_p).
       std::vector<double> volume, trace;
 
+      /// The trace of each particle's @p values[p] (increments, stresses)
+      /// replaced by the volume-weighted mean of its cell and body.
+      template <typename T>
+      void
+      replace_mean_trace(const State<dim> &state, T *values);
+
       /// Zeroed sums for the particles of @p state; the slot of particle
       /// p is slot(p).
       std::size_t
