@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/simulator/contact_coupling.h>
+#include <psmpm/simulator/dof_body_masks.h>
 
 
 namespace psmpm
@@ -281,30 +282,7 @@ namespace psmpm
       const unsigned int  n         = grid.dofs_per_cell;
       const unsigned int *dofs      = grid.cell_dofs().data();
       const unsigned int  n_cells   = contact_cell.size();
-      cell_mask.assign(n_cells, 0);
-      for (std::size_t p = 0; p < particles.size(); ++p)
-        cell_mask[particles.cell[p]] |= 1u << (particles.body_id[p] - 1);
-      dof_mask.assign(dof_index.size(), 0);
-      for (unsigned int c = 0; c < n_cells; ++c)
-        if (cell_mask[c] != 0)
-          for (unsigned int k = 0; k < n; ++k)
-            dof_mask[dofs[c * n + k]] |= cell_mask[c];
-      if (n_ranks > 1)
-        {
-          // Bit b of a DoF on a rank boundary: body b on any rank.
-          std::vector<double> has(dof_index.size()),
-            sum(grid.locally_owned_dofs().n_elements());
-          for (unsigned int b = 0; b < n_bodies; ++b)
-            {
-              for (unsigned int l = 0; l < has.size(); ++l)
-                has[l] = (dof_mask[l] >> b) & 1u;
-              grid.ghost_exchange().sum_to_owned(has, sum.data());
-              grid.ghost_exchange().owned_to_relevant(sum.data(), has);
-              for (unsigned int l = 0; l < has.size(); ++l)
-                if (has[l] > 0)
-                  dof_mask[l] |= 1u << b;
-            }
-        }
+      dof_body_masks(state, cell_mask, dof_mask);
       for (const unsigned int l : contact_dofs)
         dof_index[l] = numbers::invalid_unsigned_int;
       contact_dofs.clear();

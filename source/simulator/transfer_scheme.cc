@@ -35,11 +35,18 @@ namespace psmpm
         Patterns::Selection("particle|cell average"),
         "particle: each particle's strain increment from the grid velocity "
         "gradient at the particle; cell average: its volumetric part "
-        "replaced by the volume-weighted mean over the particles of the "
-        "same body in the same cell (F-bar, against volumetric locking of "
-        "isochoric plastic flow and nearly incompressible materials with "
-        "Powell-Sabin; doc/geomechanics.md). The same on P1, whose "
-        "gradients are constant on cells: the average is skipped there.");
+        "replaced by its cell's volume change, and the internal forces "
+        "take the cell's mean pressure (B-bar, against volumetric locking "
+        "of isochoric plastic flow and nearly incompressible materials "
+        "with Powell-Sabin; doc/geomechanics.md): in a cell inside one "
+        "body (half filled or more, every cell around its functions "
+        "holding that body alone) the volume change of the grid velocity "
+        "integrated exactly over the cell and the pressure's force "
+        "integrated exactly; elsewhere (free surfaces, cells shared by "
+        "bodies or next to a contact, and with otm) the volume-weighted "
+        "means over the particles of the same body in the same cell. The "
+        "same on P1, whose gradients are constant on cells: the average "
+        "is skipped there.");
       TransferSchemeRegistry<dim>::instance().declare_parameters(prm);
       Reconstruction<dim>::declare_parameters(prm);
       prm.leave_subsection();
@@ -126,6 +133,9 @@ namespace psmpm
                  force_weight == 1))
         ParticleLoops::particles_to_cells(state, momentum_weight, force_weight);
       state.forces_in_cells = false;
+      state.cell_forces.add_to(grid.cell_arrays().rhs.data(),
+                               grid.dofs_per_cell,
+                               force_weight);
       grid.assemble_mass();
     }
 

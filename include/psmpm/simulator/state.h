@@ -12,6 +12,7 @@
 #include <psmpm/mesh/cell_locator.h>
 #include <psmpm/particles/particle_set.h>
 #include <psmpm/postprocess/state_view.h>
+#include <psmpm/simulator/cell_forces.h>
 #include <psmpm/solver/grid_system.h>
 
 #include <memory>
@@ -167,12 +168,17 @@ namespace psmpm
       /**
        * With Transfer/Volumetric strain = cell average, from the start of
        * a step until its material update: each particle's stress with
-       * its in-plane mean replaced by the mean of its cell and body
-       * (VolumetricAveraging::average_stress()), so that the internal
-       * forces are work-conjugate to the averaged strain increments
-       * (B-bar). Empty otherwise (stress_for_forces()).
+       * its in-plane mean replaced by the mean of its cell and body, or
+       * removed where the cell's pressure is integrated exactly
+       * (cell_forces; VolumetricAveraging::prepare()), so that the
+       * internal forces are work-conjugate to the averaged strain
+       * increments (B-bar). Empty otherwise (stress_for_forces()).
        */
       std::vector<SymmetricTensor<2, dim>> force_stress;
+      /// The forces of the cells whose pressure is integrated exactly,
+      /// for the same steps as force_stress; every particle-to-grid pass
+      /// adds them to the cell right-hand sides. Empty otherwise.
+      CellForces<dim> cell_forces;
 
     private:
       /// Scratch of evaluate_shape_functions() (the values it discards

@@ -160,21 +160,23 @@ namespace psmpm
 
       /// Whether move_and_update_material() gives each particle the mean
       /// volumetric strain of its cell and body (Transfer/Volumetric
-      /// strain = cell average; VolumetricAveraging).
+      /// strain = cell average; VolumetricAveraging), with the cells one
+      /// body fills integrated exactly if @p exact_cells (a fixed grid).
       void
-      average_volumetric_strain(const bool average)
+      average_volumetric_strain(const bool average, const bool exact_cells)
       {
-        averaging.reset(average ? new VolumetricAveraging<dim>() : nullptr);
+        averaging.reset(average ? new VolumetricAveraging<dim>(exact_cells) :
+                                  nullptr);
       }
 
-      /// Before step(): with the volumetric average, the stresses of the
-      /// step's internal forces (State::force_stress), on the cells the
-      /// particles are in now.
+      /// Before step(): with the volumetric average, the stresses and cell
+      /// forces of the step's internal forces (State::force_stress,
+      /// State::cell_forces), on the cells the particles are in now.
       void
       prepare_step(State<dim> &state)
       {
         if (averages(state))
-          averaging->average_stress(state, state.force_stress);
+          averaging->prepare(state);
       }
 
       /// Whether the last step located its particles (relocate_with());

@@ -28,6 +28,7 @@ namespace psmpm
       // here.
       const bool average = averages(state);
       state.force_stress.clear();
+      state.cell_forces.clear();
       const bool accumulate =
         relocation != nullptr && kernels.accumulates(state) && !average;
       PhaseTimer::Laps laps(timer);

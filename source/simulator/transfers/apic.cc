@@ -191,6 +191,9 @@ namespace psmpm
                 add_to_cells(state, 0, state.particles.size());
               }
             state.forces_in_cells = false;
+            state.cell_forces.add_to(forces.data(),
+                                     state.grid->dofs_per_cell,
+                                     1.);
             assemble_mass(state);
             finish_momentum(state);
           }
