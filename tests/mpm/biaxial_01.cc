@@ -19,12 +19,13 @@
 // reaches the yield surface (elastic until then, then plastic flow at
 // constant stress), so sigma_xx at the end is the closed form's
 // sigma_xx at first yield. Powell-Sabin with Transfer/Volumetric strain
-// = cell average is checked as well: with 5 particles per cell the
-// particles' quadrature of the cells' pressure forces, which one pressure
-// per cell cannot balance, drove a volume change the geometry did not
-// have, and the sample lost its confinement (sigma_xx -11 kPa and
-// +0.5 kPa at psi = 10 and 0 against -41 and -50 kPa); the cells inside
-// the body now integrate their pressure exactly (VolumetricAveraging).
+// = cell average is checked as well: with 5 particles per cell, a cell
+// pressure that acted through the particles' quadrature of the cells'
+// gradient integrals, which one pressure per cell cannot balance, would
+// drive a volume change the geometry does not have and take the
+// sample's confinement away (measured: sigma_xx -11 kPa and +0.5 kPa at
+// psi = 10 and 0 against -41 and -50 kPa); the cells inside the body
+// integrate their pressure exactly (VolumetricAveraging).
 #include "../mpm_tests.h"
 
 #include <filesystem>

@@ -50,9 +50,9 @@ namespace psmpm
      *    and under plastic flow, which offers no deviatoric stiffness,
      *    the push turns into a velocity that the particles read as a
      *    volume change the geometry does not have: a biaxial sample
-     *    deformed at constant volume with 5 particles per cell lost all
+     *    deformed at constant volume with 5 particles per cell loses all
      *    of its confining pressure with the particle means, and holds it
-     *    with the exact cells (doc/geomechanics.md).
+     *    with the exact cells (tests/mpm/biaxial_01).
      *  - Any other cell (partly filled, next to a free surface, shared
      *    by bodies or next to a contact): the volume-weighted means over the
      *    particles of each body, e_c = sum_q V_q tr(dt L_q) / sum_q V_q
