@@ -2,9 +2,15 @@
 # The cost of the soil models against the elastic one on the throughput bar
 # (prm/benchmark_throughput.prm: 320,000 particles, P1, lumped mass, MUSL):
 # each pair of runs side by side, one per core (taskset), so that both see
-# the same machine; rate (particle-steps per second), the loop's CPU and
-# wall seconds and the update phase's seconds from summary.json.
-#   bash contrib/geomechanics/plastic_cost.sh [build/psmpm] [rounds]
+# the same machine; rate (particle-steps per second), the CPU and wall
+# seconds of the steps (summary.json's cpu_time_steps_s and time_loop_s:
+# without the output and the checkpoint at the end, which cost about a
+# second on the bar whatever the material) and the update phase's seconds,
+# and the ratio of the steps' CPU seconds, soil model over elastic.
+#   bash contrib/geomechanics/plastic_cost.sh [build/psmpm] [rounds] \
+#     [steps] [--set "entry=value" ...]
+# The --set entries go to both runs of a pair (another basis, mass or
+# transfer).
 # Cases: hypoelastic; mohr-coulomb and drucker-prager far from yield
 # (Cohesion 1e9: the elastic path with the yield test); mohr-coulomb and
 # drucker-prager yielding in every particle and step (Tresca / von Mises,
@@ -13,6 +19,10 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 binary=${1:-$root/build/psmpm}
 rounds=${2:-3}
+steps=${3:-400}
+shift $(($# < 3 ? $# : 3))
+common=("$@")
+end_time=$(/usr/bin/python3 -c "print($steps * 1e-5)")
 work=$(mktemp -d)
 # Each run writes its first and last VTU output (about 140 MB on the bar):
 # removed after each pair, and all of it on any exit.
@@ -21,16 +31,19 @@ run() { # core name args...
   local core=$1 name=$2
   shift 2
   taskset -c "$core" "$binary" "$root/prm/benchmark_throughput.prm" \
-    --set "Output directory=$work/$name" --set "Time/End time=1e-3" "$@" \
-    > /dev/null 2>&1
+    --set "Output directory=$work/$name" --set "Time/End time=$end_time" \
+    "${common[@]}" "$@" > /dev/null 2>&1
 }
-report() {
-  /usr/bin/python3 - "$work/$1/summary.json" "$1" <<'PY'
+report() { # elastic-run soil-run
+  /usr/bin/python3 - "$work" "$1" "$2" <<'PY'
 import json, sys
-s = json.load(open(sys.argv[1]))
-print(f"{sys.argv[2]:24s} rate {s['particle_steps_per_second']:.3e}  "
-      f"loop CPU {s['cpu_time_loop_s']:.2f} s  loop wall {s['time_loop_s']:.2f} s  "
-      f"update {s['timers_s']['update']:.2f} s  status {s['status']}")
+work, names = sys.argv[1], sys.argv[2:]
+s = [json.load(open(f"{work}/{n}/summary.json")) for n in names]
+for n, x in zip(names, s):
+    print(f"{n:28s} rate {x['particle_steps_per_second']:.3e}  "
+          f"steps CPU {x['cpu_time_steps_s']:.2f} s  wall {x['time_loop_s']:.2f} s  "
+          f"update {x['timers_s']['update']:.2f} s  status {x['status']}")
+print(f"{'ratio (steps CPU)':28s} {s[1]['cpu_time_steps_s'] / s[0]['cpu_time_steps_s']:.3f}")
 PY
 }
 elastic=(--set "Material/Model=hypoelastic")
@@ -49,8 +62,7 @@ for round in $(seq "$rounds"); do
       run 1 "hypo_$tag" "${elastic[@]}" & run 0 "$tag" "${args[@]}" & wait
     fi
     echo "round $round:"
-    report "hypo_$tag"
-    report "$tag"
+    report "hypo_$tag" "$tag"
     rm -rf "${work:?}/hypo_$tag" "${work:?}/$tag"
   done
 done

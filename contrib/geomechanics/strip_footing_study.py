@@ -5,6 +5,7 @@
         [--exe build/psmpm] [--work DIR] [--meshes 4,8,16]
         [--bases linear,powell-sabin] [--cases tresca,tresca-nu45,
         cphi-psi0,cphi-assoc] [--jobs 1] [--reuse] [--no-files]
+        [--references]
         [--body [--width 1] [--end-settlement 0.12]
          [--set Subsection/Entry=value ...]]
 
@@ -86,6 +87,37 @@ CASES = {
                         'Material/Dilatancy angle=%g' % PHI,
                         "Material/Young's modulus=2e7"]),
 }
+
+
+def bearing_factor_nc(phi_deg):
+    """Prandtl-Reissner N_c = (N_q - 1) cot phi (associated flow)."""
+    t = math.tan(math.radians(phi_deg))
+    nq = math.exp(math.pi * t) * math.tan(math.radians(45 + phi_deg / 2)) ** 2
+    return (nq - 1) / t
+
+
+def davis_estimate(phi_deg, psi_deg):
+    """q_u / c of a non-associated soil by Davis' reduced strength (Davis
+    1968; Drescher and Detournay 1993): the associated limit load of c* =
+    eta c and tan phi* = eta tan phi, eta = cos psi cos phi / (1 - sin psi
+    sin phi). A lower estimate: the non-associated load lies between it
+    and the associated one (eta = 1 for psi = phi)."""
+    phi, psi = math.radians(phi_deg), math.radians(psi_deg)
+    eta = math.cos(psi) * math.cos(phi) / (1 - math.sin(psi) * math.sin(phi))
+    return eta * bearing_factor_nc(math.degrees(math.atan(eta * math.tan(phi))))
+
+
+def print_references():
+    """--references: each case's reference and, for c-phi, Davis'."""
+    print('case\treference q_u/c\tDavis q_u/c\tDavis / reference - 1')
+    for case, (ref, entries) in CASES.items():
+        angles = dict(e.split('=') for e in entries if 'angle' in e)
+        phi = float(angles['Material/Friction angle'])
+        psi = float(angles['Material/Dilatancy angle'])
+        davis = davis_estimate(phi, psi) if phi > 0 else 2 + math.pi
+        print('%s\t%.3f\t%.3f\t%+.4f' % (case, ref, davis, davis / ref - 1))
+
+
 END_TIME = 0.85   # settlement 0.08 B
 WINDOW = 0.01     # B
 
@@ -203,6 +235,10 @@ def main():
     ap.add_argument('--bases', default='linear,powell-sabin')
     ap.add_argument('--cases', default=','.join(CASES))
     ap.add_argument('--jobs', type=int, default=1)
+    ap.add_argument('--references', action='store_true',
+                    help="print each case's reference and Davis' "
+                    'reduced-strength estimate for non-associated flow; '
+                    'no runs')
     ap.add_argument('--reuse', action='store_true',
                     help='evaluate the runs already in --work instead of '
                     'running them again')
@@ -219,6 +255,9 @@ def main():
     ap.add_argument('--set', action='append', default=[],
                     help='--body: an entry for every run')
     args = ap.parse_args()
+    if args.references:
+        print_references()
+        return
     columns, name, end = COLUMNS, 'strip_footing', END_TIME
     if args.body:
         Body.width, Body.end_settlement = args.width, args.end_settlement

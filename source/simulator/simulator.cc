@@ -752,9 +752,11 @@ namespace psmpm
               checkpoint.keep_state_before_last_step(checkpoint_archive(),
                                                      state.step);
             }
+          const double cpu_before_step = process_cpu_seconds();
           do_time_step(dt);
           ++state.step;
           postprocess(record.wall.wall_time());
+          record.cpu_time_steps += process_cpu_seconds() - cpu_before_step;
           if (status == Status::completed &&
               (stop_signal = StopRequest::agreed(comm)) != 0)
             status = Status::interrupted;
@@ -1249,6 +1251,7 @@ namespace psmpm
         }
       summary.set("time_loop_s", loop);
       summary.set("cpu_time_loop_s", record.cpu_time_loop);
+      summary.set("cpu_time_steps_s", record.cpu_time_steps);
       if (loop > 0)
         summary.set("particle_steps_per_second",
                     summary.get_number("n_particles") * state.step / loop);

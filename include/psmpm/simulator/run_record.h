@@ -77,6 +77,10 @@ namespace psmpm
       Timer wall;
       /// CPU seconds (user + sys, this rank) of the time loop of run().
       double cpu_time_loop = 0;
+      /// The part of cpu_time_loop spent in the steps and their
+      /// statistics, without output and checkpoints: the CPU counterpart
+      /// of the phases that time_loop_s and the throughput count.
+      double cpu_time_steps = 0;
     };
   } // namespace Simulator
 } // namespace psmpm
