@@ -6,7 +6,8 @@
 # seconds of the steps (summary.json's cpu_time_steps_s and time_loop_s:
 # without the output and the checkpoint at the end, which cost about a
 # second on the bar whatever the material) and the update phase's seconds,
-# and the ratio of the steps' CPU seconds, soil model over elastic.
+# and the ratio of the steps' CPU seconds, soil model over elastic (per
+# round, and at the end every case's rounds and their median).
 #   bash contrib/geomechanics/plastic_cost.sh [build/psmpm] [rounds] \
 #     [steps] [--set "entry=value" ...]
 # The --set entries go to both runs of a pair (another basis, mass or
@@ -43,7 +44,23 @@ for n, x in zip(names, s):
     print(f"{n:28s} rate {x['particle_steps_per_second']:.3e}  "
           f"steps CPU {x['cpu_time_steps_s']:.2f} s  wall {x['time_loop_s']:.2f} s  "
           f"update {x['timers_s']['update']:.2f} s  status {x['status']}")
-print(f"{'ratio (steps CPU)':28s} {s[1]['cpu_time_steps_s'] / s[0]['cpu_time_steps_s']:.3f}")
+ratio = s[1]['cpu_time_steps_s'] / s[0]['cpu_time_steps_s']
+print(f"{'ratio (steps CPU)':28s} {ratio:.3f}")
+with open(f"{work}/ratios", "a") as f:
+    f.write(f"{names[1]} {ratio:.3f}\n")
+PY
+}
+summary() { # every case's ratios over the rounds and their median
+  /usr/bin/python3 - "$work/ratios" <<'PY'
+import statistics, sys
+ratios = {}
+for line in open(sys.argv[1]):
+    name, r = line.split()
+    ratios.setdefault(name, []).append(float(r))
+print("steps CPU, soil model / elastic model, per round; median:")
+for name, r in ratios.items():
+    print(f"{name:28s} {', '.join(f'{x:.2f}' for x in r)}; "
+          f"{statistics.median(r):.2f}")
 PY
 }
 elastic=(--set "Material/Model=hypoelastic")
@@ -66,3 +83,4 @@ for round in $(seq "$rounds"); do
     rm -rf "${work:?}/hypo_$tag" "${work:?}/$tag"
   done
 done
+summary
