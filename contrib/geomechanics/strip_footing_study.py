@@ -69,9 +69,16 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))
 B, V0, RAMP, C = 1.0, 0.1, 0.1, 1e4
 PHI = 20.0
-NQ = math.exp(math.pi * math.tan(math.radians(PHI))) * \
-    math.tan(math.radians(45 + PHI / 2)) ** 2
-NC = (NQ - 1) / math.tan(math.radians(PHI))
+
+
+def bearing_factor_nc(phi_deg):
+    """Prandtl-Reissner N_c = (N_q - 1) cot phi (associated flow)."""
+    t = math.tan(math.radians(phi_deg))
+    nq = math.exp(math.pi * t) * math.tan(math.radians(45 + phi_deg / 2)) ** 2
+    return (nq - 1) / t
+
+
+NC = bearing_factor_nc(PHI)
 CASES = {
     'tresca': (2 + math.pi, ['Material/Friction angle=0',
                              'Material/Dilatancy angle=0',
@@ -87,13 +94,6 @@ CASES = {
                         'Material/Dilatancy angle=%g' % PHI,
                         "Material/Young's modulus=2e7"]),
 }
-
-
-def bearing_factor_nc(phi_deg):
-    """Prandtl-Reissner N_c = (N_q - 1) cot phi (associated flow)."""
-    t = math.tan(math.radians(phi_deg))
-    nq = math.exp(math.pi * t) * math.tan(math.radians(45 + phi_deg / 2)) ** 2
-    return (nq - 1) / t
 
 
 def davis_estimate(phi_deg, psi_deg):
@@ -114,7 +114,9 @@ def print_references():
         angles = dict(e.split('=') for e in entries if 'angle' in e)
         phi = float(angles['Material/Friction angle'])
         psi = float(angles['Material/Dilatancy angle'])
-        davis = davis_estimate(phi, psi) if phi > 0 else 2 + math.pi
+        # phi = 0 (Tresca): no friction to reduce, Davis' load is the
+        # reference.
+        davis = davis_estimate(phi, psi) if phi > 0 else ref
         print('%s\t%.3f\t%.3f\t%+.4f' % (case, ref, davis, davis / ref - 1))
 
 
