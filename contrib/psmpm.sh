@@ -38,6 +38,9 @@ if [ "$(id -u)" -eq 0 ]; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 fi
 export OMPI_MCA_rmaps_base_oversubscribe=1
+# Ranks that wait yield their core: on a busy or oversubscribed machine a
+# spinning rank takes the core its partner needs.
+export OMPI_MCA_mpi_yield_when_idle=1
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 # The tests' precompiled header is built here, once, before ctest runs
