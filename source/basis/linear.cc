@@ -225,9 +225,12 @@ namespace psmpm
           jacobian[r][c] = v[c + 1][r] - v[0][r];
       const double det = std::abs(determinant(jacobian));
 
-      const QGaussSimplex<dim> reference(3);
-      std::vector<Point<dim>>  points(reference.size());
-      std::vector<double>      weights(reference.size());
+      // Built once: constructing the rule cost more than mapping it (per
+      // cell of every ghost-penalty patch at set-up, per cell and step of
+      // the Taylor least squares reconstruction).
+      static const QGaussSimplex<dim> reference(3);
+      std::vector<Point<dim>>         points(reference.size());
+      std::vector<double>             weights(reference.size());
       for (unsigned int q = 0; q < reference.size(); ++q)
         {
           points[q]  = v[0] + jacobian * reference.point(q);
