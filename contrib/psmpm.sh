@@ -38,10 +38,11 @@ if [ "$(id -u)" -eq 0 ]; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 fi
 export OMPI_MCA_rmaps_base_oversubscribe=1
-# Ranks that wait yield their core: on a busy or oversubscribed machine a
-# spinning rank takes the core its partner needs. On one machine the ob1
-# messaging layer, and no daemon for a process started without mpirun:
-# MPI_Init then takes 0.08 s instead of 0.48 s.
+# The tests' Open MPI settings (tests/CMakeLists.txt): ranks that wait
+# yield their core (on a busy or oversubscribed machine a spinning rank
+# takes the core its partner needs); the ob1 messaging layer and no daemon
+# for a process started without mpirun, so that its MPI_Init takes 0.08 s
+# instead of 0.48 s.
 export OMPI_MCA_mpi_yield_when_idle=1 OMPI_MCA_pml=ob1
 export OMPI_MCA_ess_singleton_isolated=1
 
