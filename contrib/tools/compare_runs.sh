@@ -52,4 +52,13 @@ for m in consistent lumped extrapolate; do
   run "column_$m" $p/soil_column_large.prm "Time/End time=0.02" \
     "Mass matrix/Type=$m" "Mesh/Blocks y=16"
 done
+# The soil models (Mohr-Coulomb, Drucker-Prager: the paired returns).
+run biaxial $p/biaxial_compression.prm "Time/End time=0.05"
+run column_collapse $p/granular_column_collapse.prm "Time/End time=0.01"
+run footing $p/strip_footing.prm "Time/End time=0.1"
+run footing_body $p/strip_footing_body.prm "Time/End time=0.1"
+run cut $p/vertical_cut.prm "Time/End time=0.2"
+run slope $p/frictional_slope.prm "Time/End time=0.2"
+run column_collapse_dp $p/granular_column_collapse.prm "Time/End time=0.01" \
+  "Material/Model=drucker-prager"
 rm -rf "$work"

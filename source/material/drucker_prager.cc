@@ -126,8 +126,8 @@ namespace psmpm
           return return_to_cone(s, sigma);
         }
 
-        /// in_plane_pair() and inside_plane_pair() for two particles (the
-        /// constants of a batch: its Strength).
+        /// in_plane_pair() and inside_plane_pair() for Lanes::width particles
+        /// (the constants of a batch: its Strength).
         static constexpr bool returns_pairs = true;
 
         /// The cone's constants in both lanes, made once per batch (a
@@ -159,7 +159,7 @@ namespace psmpm
           return LaneConstants(s);
         }
 
-        /// inside_plane() of two particles in Lanes.
+        /// inside_plane() of Lanes::width particles in Lanes.
         Lanes::Mask
         inside_plane_pair(const LaneConstants &s,
                           const Lanes::Value   c,
@@ -173,7 +173,7 @@ namespace psmpm
           return Lanes::both(bound >= 0, j2 <= bound * bound);
         }
 
-        /// in_plane() of two particles in Lanes onto the cone (not the
+        /// in_plane() of Lanes::width particles in Lanes onto the cone (not the
         /// apex): the lanes where that is the answer, with @p t, @p ep and
         /// @p d_kappa there (operation by operation in_plane()'s).
         Lanes::Mask

@@ -800,7 +800,8 @@ namespace psmpm
         using Lanes::Value;
         const Value f = c.one_plus_sp * x[0] - c.one_minus_sp * x[2] - c.k;
         const Mask  plastic =
-          Lanes::and_not(Lanes::both(f <= 0, x[0] <= c.cutoff), Mask{-1, -1});
+          Lanes::and_not(Lanes::both(f <= 0, x[0] <= c.cutoff),
+                         Lanes::true_mask());
         const Value dl         = f * c.main_inverse;
         const Value g01        = (x[0] - x[1]) - dl * c.Db01;
         const Value g12        = (x[1] - x[2]) - dl * c.Db12;
@@ -835,8 +836,8 @@ namespace psmpm
         return Lanes::both(plastic, Lanes::either(main_ok, edge_ok));
       }
 
-      /// return_plane_strain() of two particles' stresses @p t in Lanes
-      /// on return_common_pair()'s paths: the lanes where it is the
+      /// return_plane_strain() of Lanes::width particles' stresses @p t in
+      /// Lanes on return_common_pair()'s paths: the lanes where it is the
       /// answer, with @p t, @p ep and @p d_kappa there.
       DEAL_II_ALWAYS_INLINE inline Lanes::Mask
       return_plane_strain_pair(const LaneConstants &constants,
@@ -936,8 +937,8 @@ namespace psmpm
         /// in_plane() maps a plane-strain stress in its own frame.
         static constexpr bool returns_in_plane = true;
 
-        /// in_plane_pair() and inside_plane_pair() for two particles, with
-        /// the constants lane_constants() makes once per batch.
+        /// in_plane_pair() and inside_plane_pair() for Lanes::width particles,
+        /// with the constants lane_constants() makes once per batch.
         static constexpr bool returns_pairs = true;
 
         bool

@@ -5,8 +5,11 @@
 #define psmpm_material_lanes_h
 
 #include <cmath>
+#include <utility>
 
-#ifdef __SSE2__
+#if defined(__AVX2__)
+#  include <immintrin.h>
+#elif defined(__SSE2__)
 #  include <emmintrin.h>
 #endif
 
@@ -15,17 +18,20 @@ namespace psmpm
   namespace Material
   {
     /**
-     * Two particles' values side by side (GCC's vector extension: packed
-     * SSE2 instructions in the default x86-64 build, plain pairs of
-     * scalar operations elsewhere), for the returns that update two
-     * yielding particles with one instruction stream. Every operation is
-     * the IEEE operation of the scalar code lane by lane (no contraction,
-     * no reassociation), so that a pair's result is bit for bit the
-     * result of the scalar update of each particle; the helpers below
+     * The values of Lanes::width particles side by side (GCC's vector
+     * extension: four lanes of packed AVX2 instructions where the build
+     * enables AVX2, two of SSE2 in the default x86-64 build, scalar
+     * operations elsewhere), for the returns that update several
+     * yielding particles with one instruction stream (the functions
+     * named "pair" take a group of Lanes::width particles). Every
+     * operation is the IEEE operation of the scalar code lane by lane (no
+     * contraction, no reassociation), so that a group's result is bit
+     * for bit the result of the scalar update of each particle; the
+     * helpers below
      * keep the scalar functions' semantics where packed instructions
      * differ (std::max and std::min at ties and signed zeros).
      *
-     * Not deal.II's VectorizedArray<double, 2>: its max and min are the
+     * Not deal.II's VectorizedArray<double>: its max and min are the
      * packed instructions (another result than std::max/std::min for
      * signed zeros, which would break the bit-identity with the scalar
      * return), and its compare_and_apply_mask yields values, not masks
@@ -33,27 +39,61 @@ namespace psmpm
      */
     namespace Lanes
     {
-      using Value = double __attribute__((vector_size(16)));
+#if defined(__AVX2__)
+      /// Four particles side by side where the build enables AVX2 (packed
+      /// 256-bit instructions: twice the particles in the same sixteen
+      /// registers), else two.
+      constexpr unsigned int width = 4;
+#else
+      constexpr unsigned int width = 2;
+#endif
+      /// lane_bits() of a mask that holds in every lane.
+      constexpr int all_bits = (1 << width) - 1;
+
+      using Value = double __attribute__((vector_size(8 * width)));
       /// A comparison's result: all bits set in a lane where it holds.
       using Mask = decltype(Value{} < Value{});
+
+      namespace internal
+      {
+        template <typename F, std::size_t... l>
+        inline Value
+        lanes_of(F &&f, std::index_sequence<l...>)
+        {
+          return Value{f(l)...};
+        }
+      } // namespace internal
+
+      /// The value f(l) in lane l.
+      template <typename F>
+      inline Value
+      lanes_of(F &&f)
+      {
+        return internal::lanes_of(f, std::make_index_sequence<width>());
+      }
 
       inline Value
       broadcast(const double x)
       {
-        return Value{x, x};
+        return lanes_of([x](std::size_t) { return x; });
       }
 
-      inline Value
-      pair(const double x0, const double x1)
+      /// A mask that holds in every lane.
+      inline Mask
+      true_mask()
       {
-        return Value{x0, x1};
+        return Value{} == Value{};
       }
 
       /// m ? a : b lane by lane.
       inline Value
       select(const Mask m, const Value a, const Value b)
       {
-#ifdef __SSE2__
+#if defined(__AVX2__)
+        // One vblendvpd (GCC 12 compiles m ? a : b with a mask combined
+        // by both() or either() into a branch per lane).
+        return _mm256_blendv_pd(b, a, reinterpret_cast<__m256d>(m));
+#elif defined(__SSE2__)
         // andpd, andnpd, orpd: GCC 12 compiles m ? a : b with a mask
         // combined by both() or either() into a branch per lane.
         const __m128d mm = reinterpret_cast<__m128d>(m);
@@ -98,30 +138,37 @@ namespace psmpm
       inline Value
       abs(const Value a)
       {
-        const Mask sign = {0x7fffffffffffffff, 0x7fffffffffffffff};
-        return reinterpret_cast<Value>(reinterpret_cast<Mask>(a) & sign);
+        const Mask sign = reinterpret_cast<Mask>(broadcast(-0.));
+        return reinterpret_cast<Value>(reinterpret_cast<Mask>(a) & ~sign);
       }
 
       inline Value
       sqrt(const Value a)
       {
-#ifdef __SSE2__
+#if defined(__AVX2__)
+        return _mm256_sqrt_pd(a);
+#elif defined(__SSE2__)
         return _mm_sqrt_pd(a);
 #else
-        return Value{std::sqrt(a[0]), std::sqrt(a[1])};
+        return lanes_of([a](std::size_t l) { return std::sqrt(a[l]); });
 #endif
       }
 
-      /// The lanes where @p m holds as bits 0 and 1 (one movmskpd: a
+      /// The lanes where @p m holds as bits 0, 1, ... (one movmskpd: a
       /// test of m[0] and m[1] element by element goes through two
       /// general-purpose registers and a dozen instructions).
       inline int
       lane_bits(const Mask m)
       {
-#ifdef __SSE2__
+#if defined(__AVX2__)
+        return _mm256_movemask_pd(reinterpret_cast<__m256d>(m));
+#elif defined(__SSE2__)
         return _mm_movemask_pd(reinterpret_cast<__m128d>(m));
 #else
-        return (m[0] != 0 ? 1 : 0) | (m[1] != 0 ? 2 : 0);
+        int bits = 0;
+        for (unsigned int l = 0; l < width; ++l)
+          bits |= (m[l] != 0 ? 1 : 0) << l;
+        return bits;
 #endif
       }
 
@@ -133,7 +180,11 @@ namespace psmpm
       inline Mask
       both(const Mask a, const Mask b)
       {
-#ifdef __SSE2__
+#if defined(__AVX2__)
+        return reinterpret_cast<Mask>(
+          _mm256_and_pd(reinterpret_cast<__m256d>(a),
+                        reinterpret_cast<__m256d>(b)));
+#elif defined(__SSE2__)
         return reinterpret_cast<Mask>(_mm_and_pd(reinterpret_cast<__m128d>(a),
                                                  reinterpret_cast<__m128d>(b)));
 #else
@@ -145,7 +196,11 @@ namespace psmpm
       inline Mask
       either(const Mask a, const Mask b)
       {
-#ifdef __SSE2__
+#if defined(__AVX2__)
+        return reinterpret_cast<Mask>(
+          _mm256_or_pd(reinterpret_cast<__m256d>(a),
+                       reinterpret_cast<__m256d>(b)));
+#elif defined(__SSE2__)
         return reinterpret_cast<Mask>(_mm_or_pd(reinterpret_cast<__m128d>(a),
                                                 reinterpret_cast<__m128d>(b)));
 #else
@@ -157,7 +212,11 @@ namespace psmpm
       inline Mask
       and_not(const Mask a, const Mask b)
       {
-#ifdef __SSE2__
+#if defined(__AVX2__)
+        return reinterpret_cast<Mask>(
+          _mm256_andnot_pd(reinterpret_cast<__m256d>(a),
+                           reinterpret_cast<__m256d>(b)));
+#elif defined(__SSE2__)
         return reinterpret_cast<Mask>(
           _mm_andnot_pd(reinterpret_cast<__m128d>(a),
                         reinterpret_cast<__m128d>(b)));
@@ -175,7 +234,7 @@ namespace psmpm
       inline bool
       all(const Mask m)
       {
-        return lane_bits(m) == 3;
+        return lane_bits(m) == all_bits;
       }
 
       /// a where m does not hold, +0 where it does (bitwise: the bits of
@@ -186,7 +245,7 @@ namespace psmpm
         return reinterpret_cast<Value>(reinterpret_cast<Mask>(a) & ~m);
       }
 
-      /// Two adjacent doubles at @p p (any alignment).
+      /// width adjacent doubles at @p p (any alignment).
       inline Value
       load(const double *p)
       {
@@ -195,18 +254,93 @@ namespace psmpm
         return v;
       }
 
-      /// @p v to two adjacent doubles at @p p (any alignment).
+      /// @p v to width adjacent doubles at @p p (any alignment).
       inline void
       store(double *p, const Value v)
       {
         __builtin_memcpy(p, &v, sizeof(v));
       }
 
-      /// (a[i], b[j]) for lane indices i, j in {0, 1}.
+      /// The columns of width consecutive records of @p n doubles at @p p
+      /// (any alignment): out[k][l] = p[n l + k], for n = 3 (a
+      /// SymmetricTensor<2, 2>) or 4 (a Tensor<2, 2>). With four lanes
+      /// n vector loads and a transposition in registers, where a lane at
+      /// a time takes a load and an insertion per value.
+      template <unsigned int n>
+      inline void
+      load_columns(const double *p, Value out[n])
+      {
+        static_assert(n == 3 || n == 4);
+#if defined(__AVX2__)
+        const Value a = load(p), b = load(p + 4), c = load(p + 8);
+        if constexpr (n == 4)
+          {
+            const Value d  = load(p + 12);
+            const Value t0 = __builtin_shuffle(a, b, Mask{0, 4, 2, 6});
+            const Value t1 = __builtin_shuffle(a, b, Mask{1, 5, 3, 7});
+            const Value t2 = __builtin_shuffle(c, d, Mask{0, 4, 2, 6});
+            const Value t3 = __builtin_shuffle(c, d, Mask{1, 5, 3, 7});
+            out[0]         = __builtin_shuffle(t0, t2, Mask{0, 1, 4, 5});
+            out[1]         = __builtin_shuffle(t1, t3, Mask{0, 1, 4, 5});
+            out[2]         = __builtin_shuffle(t0, t2, Mask{2, 3, 6, 7});
+            out[3]         = __builtin_shuffle(t1, t3, Mask{2, 3, 6, 7});
+          }
+        else
+          {
+            // a = (x0 y0 z0 x1), b = (y1 z1 x2 y2), c = (z2 x3 y3 z3).
+            out[0] =
+              __builtin_shuffle(__builtin_shuffle(a, b, Mask{0, 3, 6, 7}),
+                                c,
+                                Mask{0, 1, 2, 5});
+            out[1] =
+              __builtin_shuffle(__builtin_shuffle(a, b, Mask{1, 4, 7, 4}),
+                                c,
+                                Mask{0, 1, 2, 6});
+            out[2] =
+              __builtin_shuffle(__builtin_shuffle(a, b, Mask{2, 5, 2, 5}),
+                                c,
+                                Mask{0, 1, 4, 7});
+          }
+#else
+        for (unsigned int k = 0; k < n; ++k)
+          out[k] = lanes_of([p, k](std::size_t l) { return p[n * l + k]; });
+#endif
+      }
+
+      /// The inverse of load_columns<3>(): @p x, @p y, @p z to width
+      /// consecutive records of three doubles at @p p.
+      inline void
+      store_columns(double *p, const Value x, const Value y, const Value z)
+      {
+#if defined(__AVX2__)
+        store(p,
+              __builtin_shuffle(__builtin_shuffle(x, y, Mask{0, 4, 1, 1}),
+                                z,
+                                Mask{0, 1, 4, 2}));
+        store(p + 4,
+              __builtin_shuffle(__builtin_shuffle(y, z, Mask{1, 5, 2, 2}),
+                                x,
+                                Mask{0, 1, 6, 2}));
+        store(p + 8,
+              __builtin_shuffle(__builtin_shuffle(z, x, Mask{2, 7, 3, 3}),
+                                y,
+                                Mask{0, 1, 7, 2}));
+#else
+        for (unsigned int l = 0; l < width; ++l)
+          {
+            p[3 * l]     = x[l];
+            p[3 * l + 1] = y[l];
+            p[3 * l + 2] = z[l];
+          }
+#endif
+      }
+
+      /// (a[i], b[j]) for lane indices i, j in {0, 1} of two lanes.
       template <int i, int j>
       inline Value
       combine(const Value a, const Value b)
       {
+        static_assert(width == 2 && i >= 0 && j >= 0, "two lanes only");
         return __builtin_shuffle(a, b, Mask{i, 2 + j});
       }
     } // namespace Lanes

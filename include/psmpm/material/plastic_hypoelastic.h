@@ -187,8 +187,8 @@ namespace psmpm
        * plastic_in_plane_01 checks both against the principal return).
        * A Return with returns_pairs = true also has lane_constants(),
        * inside_plane_pair() and in_plane_pair(): in plane strain without
-       * softening the particles are then updated two at a time
-       * (update_plane_strain_pair()), bit for bit as one at a time.
+       * softening the particles are then updated Lanes::width (two or four) at
+       * a time (update_plane_strain_pair()), bit for bit as one at a time.
        */
       template <typename Return>
       void
@@ -373,16 +373,16 @@ namespace psmpm
                           std::array<double, 4>       &t) const;
 
       /**
-       * update_plane_strain() of two particles at once (a Return with
-       * returns_pairs, plane strain without softening): the trial
-       * stresses, the elastic test and the return's common path (the
-       * Return's in_plane_pair(), which says in which lanes its result is
-       * the answer) for both particles in Lanes; a yielding particle whose
-       * return leaves that path takes the one-particle in_plane(). Bit
-       * for bit update_plane_strain() of each particle. @p lanes: the
-       * Return's lane_constants() of @p s (once per batch); @p dL and
-       * @p stress point to the first particle's, @p block0 and @p block1
-       * are the two state blocks.
+       * update_plane_strain() of Lanes::width particles at once (a
+       * Return with returns_pairs, plane strain without softening): the
+       * trial stresses, the elastic test and the return's common path
+       * (the Return's in_plane_pair(), which says in which lanes its
+       * result is the answer) for all of them in Lanes; a yielding
+       * particle whose return leaves that path takes the one-particle
+       * in_plane(). Bit for bit update_plane_strain() of each particle.
+       * @p lanes: the Return's lane_constants() of @p s (once per batch);
+       * @p dL and @p stress point to the first particle's, @p block0 is
+       * its state block and the others follow @p stride values apart.
        */
       template <typename Return, typename LaneConstants>
       void
@@ -393,11 +393,11 @@ namespace psmpm
                                const Tensor<2, 2>    *dL,
                                SymmetricTensor<2, 2> *stress,
                                double                *block0,
-                               double                *block1,
+                               const unsigned int     stride,
                                double                *volume_ratio) const;
 
-      /// plane_strain_trial() of the two particles' @p dL and @p st (the
-      /// out-of-plane stresses @p szz) in Lanes.
+      /// plane_strain_trial() of the Lanes::width particles' @p dL and
+      /// @p st (the out-of-plane stresses @p szz) in Lanes.
       static void
       plane_strain_trial_pair(const BatchConstants        &c,
                               const Tensor<2, 2>          *dL,
@@ -418,17 +418,17 @@ namespace psmpm
                             const double                 d_kappa,
                             double                      *block);
 
-      /// add_plastic_increment() of two particles (@p block0, @p block1)
-      /// with the volume ratios @p J, operation by operation, on the
-      /// state columns transposed into pairs.
+      /// add_plastic_increment() of Lanes::width particles (the state
+      /// blocks @p block) with the volume ratios @p J, operation by
+      /// operation (with two lanes on the state columns transposed into
+      /// pairs).
       static void
       add_plastic_increment_pair(const BatchConstants &c,
                                  const Lanes::Value    J,
                                  const Lanes::Value    t[4],
                                  const Lanes::Value    ep[4],
                                  const Lanes::Value    d_kappa,
-                                 double               *block0,
-                                 double               *block1);
+                                 double *const         block[Lanes::width]);
 
     protected:
       bool

@@ -309,10 +309,11 @@ namespace psmpm
     {
       using namespace Lanes;
       // plane_strain_trial(), operation by operation.
-      const Value de00 = pair(dL[0][0][0], dL[1][0][0]);
-      const Value de11 = pair(dL[0][1][1], dL[1][1][1]);
-      const Value l01  = pair(dL[0][0][1], dL[1][0][1]);
-      const Value l10  = pair(dL[0][1][0], dL[1][1][0]);
+      // Tensor<2, 2> stores its rows one after the other.
+      static_assert(sizeof(Tensor<2, 2>) == 4 * sizeof(double));
+      Value d[4];
+      load_columns<4>(&dL[0][0][0], d);
+      const Value de00 = d[0], l01 = d[1], l10 = d[2], de11 = d[3];
       const Value de01 = (l01 + l10) * 0.5;
       tr               = de00 + de11;
       const Value w    = 0.5 * (l01 - l10);
@@ -325,9 +326,11 @@ namespace psmpm
       const Value q  = all(small) ? series : select(small, series, 1 / (1 + u));
       const Value cr = (1 - u) * q;
       const Value sn = w * q;
-      const Value sxx = pair(st[0][0][0], st[1][0][0]);
-      const Value syy = pair(st[0][1][1], st[1][1][1]);
-      const Value sxy = pair(st[0][0][1], st[1][0][1]);
+      // SymmetricTensor<2, 2> stores xx, yy, xy.
+      static_assert(sizeof(SymmetricTensor<2, 2>) == 3 * sizeof(double));
+      Value s[3];
+      load_columns<3>(reinterpret_cast<const double *>(st), s);
+      const Value sxx = s[0], syy = s[1], sxy = s[2];
       const Value cc = cr * cr, ss = sn * sn, cs = cr * sn;
       t[0] =
         cc * sxx + 2. * cs * sxy + ss * syy + c.lambda * tr + c.two_g * de00;
@@ -347,25 +350,41 @@ namespace psmpm
       const Lanes::Value    t[4],
       const Lanes::Value    ep[4],
       const Lanes::Value    d_kappa,
-      double               *block0,
-      double               *block1)
+      double *const         block[Lanes::width])
     {
       using namespace Lanes;
       static_assert(plastic_xx == 1 && work_column == kappa_column + 1);
-      double *const e0 = block0 + plastic_xx;
-      double *const e1 = block1 + plastic_xx;
-      store(e0, load(e0) + combine<0, 0>(ep[0], ep[1]));
-      store(e0 + 2, load(e0 + 2) + combine<0, 0>(ep[2], ep[3]));
-      store(e1, load(e1) + combine<1, 1>(ep[0], ep[1]));
-      store(e1 + 2, load(e1 + 2) + combine<1, 1>(ep[2], ep[3]));
-      const Value kw0 = load(block0 + kappa_column);
-      const Value kw1 = load(block1 + kappa_column);
       const Value dot =
         t[0] * ep[0] + t[1] * ep[1] + 2. * t[2] * ep[2] + t[3] * ep[3];
-      const Value kappa = combine<0, 0>(kw0, kw1) + d_kappa;
-      const Value work  = combine<1, 1>(kw0, kw1) + J * dot * c.inv_rho0;
-      store(block0 + kappa_column, combine<0, 0>(kappa, work));
-      store(block1 + kappa_column, combine<1, 1>(kappa, work));
+      if constexpr (width != 2)
+        {
+          // One lane at a time: the transposes into pairs below are for
+          // two lanes.
+          const Value dw = J * dot * c.inv_rho0;
+          for (unsigned int l = 0; l < width; ++l)
+            {
+              for (unsigned int k = 0; k < 4; ++k)
+                block[l][plastic_xx + k] += ep[k][l];
+              block[l][kappa_column] += d_kappa[l];
+              block[l][work_column] += dw[l];
+            }
+        }
+      else
+        {
+          double *const block0 = block[0], *const block1 = block[1];
+          double *const e0 = block0 + plastic_xx, *const e1 =
+                                                    block1 + plastic_xx;
+          store(e0, load(e0) + combine<0, 0>(ep[0], ep[1]));
+          store(e0 + 2, load(e0 + 2) + combine<0, 0>(ep[2], ep[3]));
+          store(e1, load(e1) + combine<1, 1>(ep[0], ep[1]));
+          store(e1 + 2, load(e1 + 2) + combine<1, 1>(ep[2], ep[3]));
+          const Value kw0   = load(block0 + kappa_column);
+          const Value kw1   = load(block1 + kappa_column);
+          const Value kappa = combine<0, 0>(kw0, kw1) + d_kappa;
+          const Value work  = combine<1, 1>(kw0, kw1) + J * dot * c.inv_rho0;
+          store(block0 + kappa_column, combine<0, 0>(kappa, work));
+          store(block1 + kappa_column, combine<1, 1>(kappa, work));
+        }
     }
 
 
@@ -381,22 +400,28 @@ namespace psmpm
       const Tensor<2, 2>    *dL,
       SymmetricTensor<2, 2> *stress,
       double                *block0,
-      double                *block1,
+      const unsigned int     stride,
       double                *volume_ratio) const
     {
       using namespace Lanes;
-      double *const block[2] = {block0, block1};
-      Value         tr, t[4];
+      double *block[width];
+      for (unsigned int l = 0; l < width; ++l)
+        block[l] = block0 + l * stride;
+      Value tr, t[4];
       plane_strain_trial_pair(c,
                               dL,
                               stress,
-                              pair(block0[out_of_plane], block1[out_of_plane]),
+                              lanes_of([&block](std::size_t l) {
+                                return block[l][out_of_plane];
+                              }),
                               tr,
                               t);
       const Value ratio = 1 + tr;
-      const Value J = pair(block0[ratio_column], block1[ratio_column]) * ratio;
-      block0[ratio_column] = J[0];
-      block1[ratio_column] = J[1];
+      const Value J =
+        lanes_of([&block](std::size_t l) { return block[l][ratio_column]; }) *
+        ratio;
+      for (unsigned int l = 0; l < width; ++l)
+        block[l][ratio_column] = J[l];
       store(volume_ratio, ratio);
       const Value centre  = 0.5 * (t[0] + t[1]);
       const Value half    = 0.5 * (t[0] - t[1]);
@@ -408,7 +433,7 @@ namespace psmpm
       const int outside =
         ~(lane_bits(ret.inside_plane_pair(lanes, centre, radius2, t[3])) |
           lane_bits(disconnected)) &
-        3;
+        all_bits;
       // The two stresses are six adjacent values, xx, yy, xy of each
       // (SymmetricTensor<2, 2> stores its diagonal first): three packed
       // stores from registers instead of six of single lanes. The values
@@ -423,11 +448,16 @@ namespace psmpm
             zz = zero_where(disconnected, zz);
           }
         double *const s_xx = &stress[0][0][0];
-        store(s_xx, combine<0, 0>(xx, yy));
-        store(s_xx + 2, combine<0, 1>(xy, xx));
-        store(s_xx + 4, combine<1, 1>(yy, xy));
-        block0[out_of_plane] = zz[0];
-        block1[out_of_plane] = zz[1];
+        if constexpr (width == 2)
+          {
+            store(s_xx, combine<0, 0>(xx, yy));
+            store(s_xx + 2, combine<0, 1>(xy, xx));
+            store(s_xx + 4, combine<1, 1>(yy, xy));
+          }
+        else
+          store_columns(s_xx, xx, yy, xy);
+        for (unsigned int l = 0; l < width; ++l)
+          block[l][out_of_plane] = zz[l];
       };
       if (outside == 0)
         {
@@ -438,12 +468,12 @@ namespace psmpm
       Value     r[4] = {t[0], t[1], t[2], t[3]}, ep[4], d_kappa = {};
       const int done =
         outside & lane_bits(ret.in_plane_pair(lanes, r, ep, d_kappa));
-      if (done == 3)
+      if (done == all_bits)
         {
-          add_plastic_increment_pair(c, J, r, ep, d_kappa, block0, block1);
+          add_plastic_increment_pair(c, J, r, ep, d_kappa, block);
         }
       else
-        for (unsigned int l = 0; l < 2; ++l)
+        for (unsigned int l = 0; l < width; ++l)
           {
             std::array<double, 4> tl = {{r[0][l], r[1][l], r[2][l], r[3][l]}};
             if ((done >> l) & 1)
@@ -487,14 +517,16 @@ namespace psmpm
       // for every particle.
       Strength     softened;
       unsigned int i = 0;
-      // In plane strain without softening two particles at a time.
+      // In plane strain without softening Lanes::width particles at a
+      // time.
       if constexpr (dim == 2 && Return::returns_pairs)
         if (!softens())
-          for (const auto lanes = Return::lane_constants(base); i + 1 < n;
-               i += 2)
+          for (const auto lanes = Return::lane_constants(base);
+               i + Lanes::width <= n;
+               i += Lanes::width)
             {
-              this->request_ahead(n, stress, state, stride, i);
-              this->request_ahead(n, stress, state, stride, i + 1);
+              for (unsigned int l = 0; l < Lanes::width; ++l)
+                this->request_ahead(n, stress, state, stride, i + l);
               update_plane_strain_pair(ret,
                                        base,
                                        lanes,
@@ -502,7 +534,7 @@ namespace psmpm
                                        dL + i,
                                        stress + i,
                                        state + stride * i,
-                                       state + stride * (i + 1),
+                                       stride,
                                        volume_ratio + i);
             }
       for (; i < n; ++i)
