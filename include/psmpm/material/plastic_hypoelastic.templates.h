@@ -434,10 +434,10 @@ namespace psmpm
         ~(lane_bits(ret.inside_plane_pair(lanes, centre, radius2, t[3])) |
           lane_bits(disconnected)) &
         all_bits;
-      // The two stresses are six adjacent values, xx, yy, xy of each
-      // (SymmetricTensor<2, 2> stores its diagonal first): three packed
-      // stores from registers instead of six of single lanes. The values
-      // by value: the elastic path's t stays in registers.
+      // The stresses are adjacent values, xx, yy, xy of each
+      // (SymmetricTensor<2, 2> stores its diagonal first), stored as
+      // vectors. The values by value: the elastic path's t stays in
+      // registers.
       static_assert(sizeof(SymmetricTensor<2, 2>) == 3 * sizeof(double));
       const auto write = [&](Value xx, Value yy, Value xy, Value zz) {
         if (any(disconnected))
@@ -447,15 +447,7 @@ namespace psmpm
             xy = zero_where(disconnected, xy);
             zz = zero_where(disconnected, zz);
           }
-        double *const s_xx = &stress[0][0][0];
-        if constexpr (width == 2)
-          {
-            store(s_xx, combine<0, 0>(xx, yy));
-            store(s_xx + 2, combine<0, 1>(xy, xx));
-            store(s_xx + 4, combine<1, 1>(yy, xy));
-          }
-        else
-          store_columns(s_xx, xx, yy, xy);
+        store_columns(&stress[0][0][0], xx, yy, xy);
         for (unsigned int l = 0; l < width; ++l)
           block[l][out_of_plane] = zz[l];
       };
