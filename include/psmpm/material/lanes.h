@@ -266,6 +266,68 @@ namespace psmpm
       /// SymmetricTensor<2, 2>) or 4 (a Tensor<2, 2>). With four lanes
       /// n vector loads and a transposition in registers, where a lane at
       /// a time takes a load and an insertion per value.
+#if defined(__AVX2__)
+      /// The 4 x 4 transposition out[k][l] = in[l][k] in registers.
+      inline void
+      transpose(const Value in[4], Value out[4])
+      {
+        const Value t0 = __builtin_shuffle(in[0], in[1], Mask{0, 4, 2, 6});
+        const Value t1 = __builtin_shuffle(in[0], in[1], Mask{1, 5, 3, 7});
+        const Value t2 = __builtin_shuffle(in[2], in[3], Mask{0, 4, 2, 6});
+        const Value t3 = __builtin_shuffle(in[2], in[3], Mask{1, 5, 3, 7});
+        out[0]         = __builtin_shuffle(t0, t2, Mask{0, 1, 4, 5});
+        out[1]         = __builtin_shuffle(t1, t3, Mask{0, 1, 4, 5});
+        out[2]         = __builtin_shuffle(t0, t2, Mask{2, 3, 6, 7});
+        out[3]         = __builtin_shuffle(t1, t3, Mask{2, 3, 6, 7});
+      }
+#endif
+
+      /// rows[l][k] += columns[k][l] for the four values k of each lane
+      /// l, value by value (with four lanes a transposition and one
+      /// vector addition a row, where a lane at a time takes a load, an
+      /// addition and a store per value).
+      inline void
+      add_transposed(double *const rows[width], const Value columns[4])
+      {
+#if defined(__AVX2__)
+        Value r[4];
+        transpose(columns, r);
+        for (unsigned int l = 0; l < width; ++l)
+          store(rows[l], load(rows[l]) + r[l]);
+#else
+        for (unsigned int l = 0; l < width; ++l)
+          for (unsigned int k = 0; k < 4; ++k)
+            rows[l][k] += columns[k][l];
+#endif
+      }
+
+      /// rows[l][0] += a[l] and rows[l][1] += b[l], value by value.
+      inline void
+      add_interleaved(double *const rows[width], const Value a, const Value b)
+      {
+#if defined(__AVX2__)
+        using Half = double __attribute__((vector_size(16)));
+        // (a0 b0 a2 b2) and (a1 b1 a3 b3): lanes 0 and 2, 1 and 3.
+        const Value even = __builtin_shuffle(a, b, Mask{0, 4, 2, 6});
+        const Value odd  = __builtin_shuffle(a, b, Mask{1, 5, 3, 7});
+        for (unsigned int l = 0; l < width; ++l)
+          {
+            const Value &v    = l % 2 == 0 ? even : odd;
+            const Half   pair = l < 2 ? Half{v[0], v[1]} : Half{v[2], v[3]};
+            Half         row;
+            __builtin_memcpy(&row, rows[l], sizeof(row));
+            row += pair;
+            __builtin_memcpy(rows[l], &row, sizeof(row));
+          }
+#else
+        for (unsigned int l = 0; l < width; ++l)
+          {
+            rows[l][0] += a[l];
+            rows[l][1] += b[l];
+          }
+#endif
+      }
+
       template <unsigned int n>
       inline void
       load_columns(const double *p, Value out[n])
@@ -275,15 +337,8 @@ namespace psmpm
         const Value a = load(p), b = load(p + 4), c = load(p + 8);
         if constexpr (n == 4)
           {
-            const Value d  = load(p + 12);
-            const Value t0 = __builtin_shuffle(a, b, Mask{0, 4, 2, 6});
-            const Value t1 = __builtin_shuffle(a, b, Mask{1, 5, 3, 7});
-            const Value t2 = __builtin_shuffle(c, d, Mask{0, 4, 2, 6});
-            const Value t3 = __builtin_shuffle(c, d, Mask{1, 5, 3, 7});
-            out[0]         = __builtin_shuffle(t0, t2, Mask{0, 1, 4, 5});
-            out[1]         = __builtin_shuffle(t1, t3, Mask{0, 1, 4, 5});
-            out[2]         = __builtin_shuffle(t0, t2, Mask{2, 3, 6, 7});
-            out[3]         = __builtin_shuffle(t1, t3, Mask{2, 3, 6, 7});
+            const Value rows[4] = {a, b, c, load(p + 12)};
+            transpose(rows, out);
           }
         else
           {

@@ -358,16 +358,13 @@ namespace psmpm
         t[0] * ep[0] + t[1] * ep[1] + 2. * t[2] * ep[2] + t[3] * ep[3];
       if constexpr (width != 2)
         {
-          // One lane at a time: the transposes into pairs below are for
-          // two lanes.
-          const Value dw = J * dot * c.inv_rho0;
+          double *rows[width];
           for (unsigned int l = 0; l < width; ++l)
-            {
-              for (unsigned int k = 0; k < 4; ++k)
-                block[l][plastic_xx + k] += ep[k][l];
-              block[l][kappa_column] += d_kappa[l];
-              block[l][work_column] += dw[l];
-            }
+            rows[l] = block[l] + plastic_xx;
+          add_transposed(rows, ep);
+          for (unsigned int l = 0; l < width; ++l)
+            rows[l] = block[l] + kappa_column;
+          add_interleaved(rows, d_kappa, J * dot * c.inv_rho0);
         }
       else
         {
