@@ -27,9 +27,9 @@ namespace psmpm
      * operation is the IEEE operation of the scalar code lane by lane (no
      * contraction, no reassociation), so that a group's result is bit
      * for bit the result of the scalar update of each particle; the
-     * helpers below
-     * keep the scalar functions' semantics where packed instructions
-     * differ (std::max and std::min at ties and signed zeros).
+     * helpers below keep the scalar functions' semantics where packed
+     * instructions differ (std::max and std::min at ties and signed
+     * zeros).
      *
      * Not deal.II's VectorizedArray<double>: its max and min are the
      * packed instructions (another result than std::max/std::min for
@@ -261,11 +261,6 @@ namespace psmpm
         __builtin_memcpy(p, &v, sizeof(v));
       }
 
-      /// The columns of width consecutive records of @p n doubles at @p p
-      /// (any alignment): out[k][l] = p[n l + k], for n = 3 (a
-      /// SymmetricTensor<2, 2>) or 4 (a Tensor<2, 2>). With four lanes
-      /// n vector loads and a transposition in registers, where a lane at
-      /// a time takes a load and an insertion per value.
 #if defined(__AVX2__)
       /// The 4 x 4 transposition out[k][l] = in[l][k] in registers.
       inline void
@@ -283,9 +278,9 @@ namespace psmpm
 #endif
 
       /// rows[l][k] += columns[k][l] for the four values k of each lane
-      /// l, value by value (with four lanes a transposition and one
-      /// vector addition a row, where a lane at a time takes a load, an
-      /// addition and a store per value).
+      /// l, value by value (a transposition in registers and vector
+      /// additions, where a lane at a time takes a load, an addition and
+      /// a store per value).
       inline void
       add_transposed(double *const rows[width], const Value columns[4])
       {
@@ -294,6 +289,19 @@ namespace psmpm
         transpose(columns, r);
         for (unsigned int l = 0; l < width; ++l)
           store(rows[l], load(rows[l]) + r[l]);
+#elif defined(__SSE2__)
+        // (xx, yy) and (xy, zz) of each lane.
+        const Mask zero = {0, 2}, one = {1, 3};
+        store(rows[0],
+              load(rows[0]) + __builtin_shuffle(columns[0], columns[1], zero));
+        store(rows[0] + 2,
+              load(rows[0] + 2) +
+                __builtin_shuffle(columns[2], columns[3], zero));
+        store(rows[1],
+              load(rows[1]) + __builtin_shuffle(columns[0], columns[1], one));
+        store(rows[1] + 2,
+              load(rows[1] + 2) +
+                __builtin_shuffle(columns[2], columns[3], one));
 #else
         for (unsigned int l = 0; l < width; ++l)
           for (unsigned int k = 0; k < 4; ++k)
@@ -319,6 +327,9 @@ namespace psmpm
             row += pair;
             __builtin_memcpy(rows[l], &row, sizeof(row));
           }
+#elif defined(__SSE2__)
+        store(rows[0], load(rows[0]) + __builtin_shuffle(a, b, Mask{0, 2}));
+        store(rows[1], load(rows[1]) + __builtin_shuffle(a, b, Mask{1, 3}));
 #else
         for (unsigned int l = 0; l < width; ++l)
           {
@@ -328,6 +339,11 @@ namespace psmpm
 #endif
       }
 
+      /// The columns of width consecutive records of @p n doubles at @p p
+      /// (any alignment): out[k][l] = p[n l + k], for n = 3 (a
+      /// SymmetricTensor<2, 2>) or 4 (a Tensor<2, 2>). With four lanes
+      /// n vector loads and a transposition in registers, where a lane at
+      /// a time takes a load and an insertion per value.
       template <unsigned int n>
       inline void
       load_columns(const double *p, Value out[n])
@@ -395,14 +411,6 @@ namespace psmpm
 #endif
       }
 
-      /// (a[i], b[j]) for lane indices i, j in {0, 1} of two lanes.
-      template <int i, int j>
-      inline Value
-      combine(const Value a, const Value b)
-      {
-        static_assert(width == 2 && i >= 0 && j >= 0, "two lanes only");
-        return __builtin_shuffle(a, b, Mask{i, 2 + j});
-      }
     } // namespace Lanes
   }   // namespace Material
 } // namespace psmpm

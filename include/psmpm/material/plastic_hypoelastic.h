@@ -420,8 +420,7 @@ namespace psmpm
 
       /// add_plastic_increment() of Lanes::width particles (the state
       /// blocks @p block) with the volume ratios @p J, operation by
-      /// operation (with two lanes on the state columns transposed into
-      /// pairs).
+      /// operation, the increments transposed into the state's rows.
       static void
       add_plastic_increment_pair(const BatchConstants &c,
                                  const Lanes::Value    J,

@@ -356,32 +356,13 @@ namespace psmpm
       static_assert(plastic_xx == 1 && work_column == kappa_column + 1);
       const Value dot =
         t[0] * ep[0] + t[1] * ep[1] + 2. * t[2] * ep[2] + t[3] * ep[3];
-      if constexpr (width != 2)
-        {
-          double *rows[width];
-          for (unsigned int l = 0; l < width; ++l)
-            rows[l] = block[l] + plastic_xx;
-          add_transposed(rows, ep);
-          for (unsigned int l = 0; l < width; ++l)
-            rows[l] = block[l] + kappa_column;
-          add_interleaved(rows, d_kappa, J * dot * c.inv_rho0);
-        }
-      else
-        {
-          double *const block0 = block[0], *const block1 = block[1];
-          double *const e0 = block0 + plastic_xx, *const e1 =
-                                                    block1 + plastic_xx;
-          store(e0, load(e0) + combine<0, 0>(ep[0], ep[1]));
-          store(e0 + 2, load(e0 + 2) + combine<0, 0>(ep[2], ep[3]));
-          store(e1, load(e1) + combine<1, 1>(ep[0], ep[1]));
-          store(e1 + 2, load(e1 + 2) + combine<1, 1>(ep[2], ep[3]));
-          const Value kw0   = load(block0 + kappa_column);
-          const Value kw1   = load(block1 + kappa_column);
-          const Value kappa = combine<0, 0>(kw0, kw1) + d_kappa;
-          const Value work  = combine<1, 1>(kw0, kw1) + J * dot * c.inv_rho0;
-          store(block0 + kappa_column, combine<0, 0>(kappa, work));
-          store(block1 + kappa_column, combine<1, 1>(kappa, work));
-        }
+      double *rows[width];
+      for (unsigned int l = 0; l < width; ++l)
+        rows[l] = block[l] + plastic_xx;
+      add_transposed(rows, ep);
+      for (unsigned int l = 0; l < width; ++l)
+        rows[l] = block[l] + kappa_column;
+      add_interleaved(rows, d_kappa, J * dot * c.inv_rho0);
     }
 
 
