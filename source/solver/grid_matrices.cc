@@ -102,26 +102,19 @@ namespace psmpm
     }
 
     template <int dim>
-    void
+    bool
     GridMatrices<dim>::patch_slots(const unsigned int *dofs,
                                    const unsigned int  n,
-                                   std::vector<int>   &slots) const
+                                   int                *slots) const
     {
-      slots.clear();
       if (cell_slots.empty())
-        return;
+        return false;
       const Epetra_CrsMatrix &A = matrices[0].trilinos_matrix();
       int                    *offsets, *columns;
       double                 *values;
       A.ExtractCrsDataPointers(offsets, columns, values);
-      slots.resize(n * n);
-      block_slots(offsets,
-                  columns,
-                  matrix_row,
-                  matrix_column,
-                  dofs,
-                  n,
-                  slots.data());
+      block_slots(offsets, columns, matrix_row, matrix_column, dofs, n, slots);
+      return true;
     }
 
     template <int dim>

@@ -68,11 +68,12 @@ namespace psmpm
       }
       /// Value-array positions of the entries (k, l) of a dense block over
       /// the local relevant DoFs @p dofs (-1 where the row is another
-      /// rank's); empty without direct_assembly().
-      void
+      /// rank's) into @p slots (n x n); false, and @p slots untouched,
+      /// without direct_assembly().
+      bool
       patch_slots(const unsigned int *dofs,
                   const unsigned int  n,
-                  std::vector<int>   &slots) const;
+                  int                *slots) const;
 
       /// Matrix of component @p d from the cell blocks @p mass and the
       /// @p patches under its active constraints; rows without particle

@@ -230,14 +230,14 @@ namespace psmpm
       }
       /// Value-array positions of the entries (k, l) of a dense block over
       /// the local relevant DoFs @p dofs (-1 where the row is another
-      /// rank's), for PatchBlock::slots; empty if the matrices are not
-      /// assembled directly.
-      void
+      /// rank's), for PatchBlock::slots, into @p slots (n x n); false if
+      /// the matrices are not assembled directly.
+      bool
       patch_slots(const unsigned int *dofs,
                   const unsigned int  n,
-                  std::vector<int>   &slots) const
+                  int                *slots) const
       {
-        matrices.patch_slots(dofs, n, slots);
+        return matrices.patch_slots(dofs, n, slots);
       }
       const std::vector<unsigned int> &
       owned_cells() const

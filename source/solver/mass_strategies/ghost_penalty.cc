@@ -197,7 +197,7 @@ namespace psmpm
               // polynomial extension.
               if (!(fill[f.cells[0]] > 0 && fill[f.cells[1]] > 0))
                 continue;
-              add_block(grid, f, w, treated);
+              add_block(grid, pair_pool, f, w, treated);
             }
           penalize_lone_cells(grid, fill.data(), sampled, treated);
           unsigned int n_treated = 0;
@@ -212,30 +212,34 @@ namespace psmpm
 
       private:
         struct Face;
+        struct PatchPool;
 
         /// Adds @p f's block with weight @p w to the grid's patch blocks
         /// (its slots recomputed when the sparsity changed) and marks its
         /// DoFs as treated.
-        void
+        static void
         add_block(GridSystem<dim>   &grid,
+                  PatchPool         &pool,
                   Face              &f,
                   const double       w,
-                  std::vector<bool> &treated) const
+                  std::vector<bool> &treated)
         {
+          const unsigned int *dofs  = &pool.dofs[f.first_dof];
+          int                *slots = &pool.slots[f.first_value];
           if (f.generation != grid.sparsity_generation())
             {
-              grid.patch_slots(f.dofs.data(), f.dofs.size(), f.slots);
+              f.has_slots  = grid.patch_slots(dofs, f.n, slots);
               f.generation = grid.sparsity_generation();
             }
           typename GridSystem<dim>::PatchBlock b;
-          b.dofs   = f.dofs.data();
-          b.n      = f.dofs.size();
-          b.values = &f.S(0, 0);
+          b.dofs   = dofs;
+          b.n      = f.n;
+          b.values = &pool.values[f.first_value];
           b.weight = w;
-          b.slots  = f.slots.empty() ? nullptr : f.slots.data();
+          b.slots  = f.has_slots ? slots : nullptr;
           grid.patch_blocks().push_back(b);
-          for (const unsigned int l : f.dofs)
-            treated[l] = true;
+          for (unsigned int k = 0; k < f.n; ++k)
+            treated[dofs[k]] = true;
         }
 
         /**
@@ -277,7 +281,7 @@ namespace psmpm
             return;
           compute_lone_patches(grid);
           for (const auto &[c, w] : lone_now)
-            add_block(grid, lone[c], w, treated);
+            add_block(grid, lone_pool, lone[c], w, treated);
         }
 
         /// The patches of the cells in lone_now that have none yet: their
@@ -290,7 +294,7 @@ namespace psmpm
           std::vector<bool> wanted(lone.size(), false);
           bool              any = false;
           for (const auto &cw : lone_now)
-            if (lone[cw.first].dofs.empty())
+            if (lone[cw.first].n == 0)
               any = wanted[cw.first] = true;
           if (!any)
             return;
@@ -305,32 +309,65 @@ namespace psmpm
               const unsigned int c = cell->active_cell_index();
               if (!wanted[c])
                 continue;
-              Face &f = lone[c];
+              std::vector<unsigned int> patch;
               cell->get_dof_indices(dofs);
               for (unsigned int k = 0; k < n; ++k)
-                f.dofs.push_back(
-                  grid.relevant_dofs().index_within_set(dofs[k]));
-              f.cells = {{c, c}};
-              f.S     = polynomial_complement(grid.get_space(),
-                                          dh,
-                                          {c},
-                                          {identity},
-                                          n,
-                                          0,
-                                          cell->center(),
-                                          cell->diameter());
+                patch.push_back(grid.relevant_dofs().index_within_set(dofs[k]));
+              lone[c].cells = {{c, c}};
+              lone_pool.append(lone[c],
+                               patch,
+                               polynomial_complement(grid.get_space(),
+                                                     dh,
+                                                     {c},
+                                                     {identity},
+                                                     n,
+                                                     0,
+                                                     cell->center(),
+                                                     cell->diameter()));
             }
         }
 
+        /// A patch: its cells and where its data lies in a PatchPool.
         struct Face
         {
           std::array<unsigned int, 2> cells;
-          std::vector<unsigned int>   dofs; ///< local relevant, unique
-          FullMatrix<double>          S;    ///< int (u - Pu)(v - Pv)
-          /// Value-array positions of S's entries (GridSystem::patch_slots)
-          /// for the sparsity of @p generation.
-          std::vector<int> slots;
-          unsigned int     generation = 0;
+          unsigned int                n           = 0; ///< its DoFs
+          std::size_t                 first_dof   = 0;
+          std::size_t                 first_value = 0;
+          /// Whether the pool holds the value-array positions of its
+          /// entries (GridSystem::patch_slots) for the sparsity of
+          /// @p generation.
+          bool         has_slots  = false;
+          unsigned int generation = 0;
+        };
+
+        /**
+         * The patches' DoFs (local relevant, unique), their matrices
+         * int (u - Pu)(v - Pv) (n x n, row-major) and the entries' value
+         * slots, each in one array in the order of the patches. A step
+         * reads every patch of a body that is not filled (about 12 per
+         * triangle); with a vector per patch these reads went to as many
+         * scattered heap blocks, and the ghost penalty's assembly took
+         * most of P1's free-body step on the throughput bar.
+         */
+        struct PatchPool
+        {
+          std::vector<unsigned int> dofs;
+          std::vector<double>       values;
+          std::vector<int>          slots;
+
+          void
+          append(Face                            &f,
+                 const std::vector<unsigned int> &patch_dofs,
+                 const FullMatrix<double>        &S)
+          {
+            f.n           = patch_dofs.size();
+            f.first_dof   = dofs.size();
+            f.first_value = values.size();
+            dofs.insert(dofs.end(), patch_dofs.begin(), patch_dofs.end());
+            values.insert(values.end(), &S(0, 0), &S(0, 0) + f.n * f.n);
+            slots.resize(values.size(), -1);
+          }
         };
 
         /// One patch per pair of cells sharing a vertex, one of them owned
@@ -390,31 +427,37 @@ namespace psmpm
                           patch.push_back(g);
                       }
                   }
+                std::vector<unsigned int> patch_dofs;
                 for (const auto g : patch)
-                  face.dofs.push_back(rel.index_within_set(g));
+                  patch_dofs.push_back(rel.index_within_set(g));
                 // Polynomials centred between the cells, scaled by them.
                 const Point<dim> x0 = (cell->center() + other->center()) / 2.;
                 const double h = std::max(cell->diameter(), other->diameter());
-                face.S         = polynomial_complement(space,
-                                               dh,
-                                               {face.cells[0], face.cells[1]},
-                                               {map[0], map[1]},
-                                               patch.size(),
-                                               k,
-                                               x0,
-                                               h);
-                faces.push_back(std::move(face));
+                pair_pool.append(face,
+                                 patch_dofs,
+                                 polynomial_complement(space,
+                                                       dh,
+                                                       {face.cells[0],
+                                                        face.cells[1]},
+                                                       {map[0], map[1]},
+                                                       patch.size(),
+                                                       k,
+                                                       x0,
+                                                       h));
+                faces.push_back(face);
               }
             }
         }
 
         std::vector<Face>   faces;
+        PatchPool           pair_pool;
         std::vector<double> measure;
         /// The cells sharing a vertex with each cell.
         std::vector<std::vector<unsigned int>> neighbours;
         /// Patches of lone cells (penalize_lone_cells()), by cell; empty
         /// until a cell is alone.
         std::vector<Face> lone;
+        PatchPool         lone_pool;
         /// The lone cells of this step and their weights.
         std::vector<std::pair<unsigned int, double>> lone_now;
       };
