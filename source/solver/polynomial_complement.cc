@@ -49,6 +49,27 @@ namespace psmpm
               *r++ = first[total - a] * last[a];
       }
 
+      /// The matrices of one call, kept from call to call: the ghost
+      /// penalty calls this for every pair of cells sharing a vertex at
+      /// set-up (about six per cell), and allocating them each time took
+      /// as long as the sums. reinit() to the same or a smaller size
+      /// keeps the memory.
+      struct Workspace
+      {
+        std::vector<double> values, p;
+        FullMatrix<double>  M, B, G, G_k, B_k, GB, BtGB;
+      };
+
+      /// Not inlined: inlined, the compiler recomputed the thread-local
+      /// address (a call to __tls_get_addr in a shared library) at every
+      /// use of the reference in the sums.
+      [[gnu::noinline]] Workspace &
+      workspace()
+      {
+        thread_local Workspace w;
+        return w;
+      }
+
       /// M - B_k^T G_k^-1 B_k with B_k the first @p k rows of @p B and G_k
       /// the leading k x k block of @p G: the complement of the
       /// polynomials whose monomials come first (those of lower degree),
@@ -59,17 +80,21 @@ namespace psmpm
       minus_projection(const FullMatrix<double> &M,
                        const FullMatrix<double> &B,
                        const FullMatrix<double> &G,
-                       const unsigned int        k)
+                       const unsigned int        k,
+                       Workspace                &w)
       {
         const unsigned int n = M.m();
-        FullMatrix<double> S(M), G_k(k, k), B_k(k, n);
-        G_k.fill(G);
-        B_k.fill(B);
-        G_k.gauss_jordan();
-        FullMatrix<double> GB(k, n), BtGB(n, n);
-        G_k.mmult(GB, B_k);
-        B_k.Tmmult(BtGB, GB);
-        S.add(-1., BtGB);
+        FullMatrix<double> S(M);
+        w.G_k.reinit(k, k);
+        w.B_k.reinit(k, n);
+        w.G_k.fill(G);
+        w.B_k.fill(B);
+        w.G_k.gauss_jordan();
+        w.GB.reinit(k, n);
+        w.BtGB.reinit(n, n);
+        w.G_k.mmult(w.GB, w.B_k);
+        w.B_k.Tmmult(w.BtGB, w.GB);
+        S.add(-1., w.BtGB);
         for (unsigned int a = 0; a < n; ++a)
           for (unsigned int b = a + 1; b < n; ++b)
             S(a, b) = S(b, a) = 0.5 * (S(a, b) + S(b, a));
@@ -105,8 +130,14 @@ namespace psmpm
                   ExcMessage("polynomial_complement: degree " +
                              std::to_string(degree) + " above " +
                              std::to_string(max_degree) + "."));
-      std::vector<double> values(n), p(np);
-      FullMatrix<double>  S(n_patch, n_patch), B(np, n_patch), G(np, np);
+      Workspace           &work   = workspace();
+      std::vector<double> &values = work.values, &p = work.p;
+      values.resize(n);
+      p.resize(np);
+      FullMatrix<double> &S = work.M, &B = work.B, &G = work.G;
+      S.reinit(n_patch, n_patch);
+      B.reinit(np, n_patch);
+      G.reinit(np, np);
       for (unsigned int s = 0; s < cells.size(); ++s)
         {
           const unsigned int    c = cells[s];
@@ -132,8 +163,9 @@ namespace psmpm
       if (mass != nullptr)
         *mass = S;
       if (lower != nullptr)
-        *lower = minus_projection(S, B, G, n_monomials<dim>(lower_degree));
-      return minus_projection(S, B, G, np);
+        *lower =
+          minus_projection(S, B, G, n_monomials<dim>(lower_degree), work);
+      return minus_projection(S, B, G, np, work);
     }
 
     template unsigned int

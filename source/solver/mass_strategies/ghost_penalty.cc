@@ -11,8 +11,8 @@
 #include <psmpm/solver/polynomial_complement.h>
 #include <psmpm/solver/symmetric_3x3.h>
 
+#include <algorithm>
 #include <cmath>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -386,12 +386,16 @@ namespace psmpm
             grid.n_cells);
           for (const auto &cell : dh.active_cell_iterators())
             cells[cell->active_cell_index()] = cell;
-          std::set<std::pair<unsigned int, unsigned int>> pairs;
+          // Sorted and unique: the order of std::set, without a node per
+          // pair.
+          std::vector<std::pair<unsigned int, unsigned int>> pairs;
           for (const auto &around : grid.vertex_tables().cells)
             for (const unsigned int a : around)
               for (const unsigned int b : around)
                 if (a < b)
-                  pairs.emplace(a, b);
+                  pairs.emplace_back(a, b);
+          std::sort(pairs.begin(), pairs.end());
+          pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
           neighbours.assign(grid.n_cells, {});
           lone.resize(grid.n_cells);
           for (const auto &[a, b] : pairs)
@@ -399,6 +403,11 @@ namespace psmpm
               neighbours[a].push_back(b);
               neighbours[b].push_back(a);
             }
+          // Reused from pair to pair (a mesh has about six pairs per
+          // cell).
+          std::vector<unsigned int>              pair_cells(2), patch_dofs;
+          std::vector<std::vector<unsigned int>> map(2);
+          std::vector<types::global_dof_index>   patch;
           for (const auto &[a, b] : pairs)
             {
               {
@@ -414,10 +423,10 @@ namespace psmpm
                 face.cells = {
                   {cell->active_cell_index(), other->active_cell_index()}};
                 // Patch DoFs and, per cell, the map cell DoF -> patch.
-                std::array<std::vector<unsigned int>, 2> map;
-                std::vector<types::global_dof_index>     patch;
+                patch.clear();
                 for (unsigned int s = 0; s < 2; ++s)
                   {
+                    map[s].clear();
                     (s == 0 ? cell : other)->get_dof_indices(dofs);
                     for (const auto g : dofs)
                       {
@@ -427,19 +436,19 @@ namespace psmpm
                           patch.push_back(g);
                       }
                   }
-                std::vector<unsigned int> patch_dofs;
+                patch_dofs.clear();
                 for (const auto g : patch)
                   patch_dofs.push_back(rel.index_within_set(g));
                 // Polynomials centred between the cells, scaled by them.
                 const Point<dim> x0 = (cell->center() + other->center()) / 2.;
                 const double h = std::max(cell->diameter(), other->diameter());
+                pair_cells     = {face.cells[0], face.cells[1]};
                 pair_pool.append(face,
                                  patch_dofs,
                                  polynomial_complement(space,
                                                        dh,
-                                                       {face.cells[0],
-                                                        face.cells[1]},
-                                                       {map[0], map[1]},
+                                                       pair_cells,
+                                                       map,
                                                        patch.size(),
                                                        k,
                                                        x0,
