@@ -126,13 +126,22 @@ namespace psmpm
               if (affine && (C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
                              C[1][1] != 0))
                 {
+                  // sum_k phi_k d_k x C d_k, d_k = X_k - x, is
+                  // C_yx D_xx + (C_yy - C_xx) D_xy - C_xy D_yy with D =
+                  // sum_k phi_k d_k d_k^T: three independent sums instead
+                  // of one chain of additions through local.h.
                   const unsigned int base = particles.cell[p] * n;
                   const double      *phi  = &state.shape_values[p * n];
+                  double             Dxx = 0, Dxy = 0, Dyy = 0;
                   for (unsigned int k = 0; k < n; ++k)
                     {
                       const Tensor<1, 2> d = control_points[dofs[base + k]] - x;
-                      local.h += m * phi[k] * cross(d, C * d);
+                      Dxx += phi[k] * d[0] * d[0];
+                      Dxy += phi[k] * d[0] * d[1];
+                      Dyy += phi[k] * d[1] * d[1];
                     }
+                  local.h += m * (C[1][0] * Dxx + (C[1][1] - C[0][0]) * Dxy -
+                                  C[0][1] * Dyy);
                 }
               local.mass += m;
               local.first += m * x;

@@ -70,14 +70,15 @@ namespace psmpm
     void
     Postprocessors<dim>::updated(const State<dim> &state,
                                  const std::size_t first,
-                                 const std::size_t last)
+                                 const std::size_t last,
+                                 const bool        located,
+                                 const bool        carries_affine)
     {
       Postprocess::StateView<dim> view = state;
       view.reference                   = reference;
-      // Schemes that carry affine matrices are not observed.
-      view.carries_affine = false;
+      view.carries_affine              = carries_affine;
       for (const auto p : observers)
-        p->updated(view, first, last);
+        p->updated(view, first, last, located);
     }
 
     template <int dim>

@@ -41,9 +41,10 @@ namespace psmpm
         void
         updated(const StateView<dim> &state,
                 const std::size_t     first,
-                const std::size_t     last) override
+                const std::size_t     last,
+                const bool            located) override
         {
-          sums.updated(state, first, last);
+          sums.updated(state, first, last, located);
         }
 
         void
