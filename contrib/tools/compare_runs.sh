@@ -32,10 +32,12 @@ def load(which):
 a, b = load("old"), load("new")
 if a is None or b is None:
     print(f"{name}\tno statistics"); sys.exit()
-diff = sum(x[i] != y[b[0].index(c)]
-           for x, y in zip(a[1], b[1])
-           for i, c in enumerate(a[0]) if c != "wall_time" and c in b[0])
-print(f"{name}\trows {len(a[1])} {len(b[1])}\tdiffering values {diff}")
+differing = [c for x, y in zip(a[1], b[1])
+             for i, c in enumerate(a[0])
+             if c != "wall_time" and c in b[0] and x[i] != y[b[0].index(c)]]
+columns = sorted(set(differing))
+print(f"{name}\trows {len(a[1])} {len(b[1])}\tdiffering values {len(differing)}"
+      + (f"\t({', '.join(columns)})" if columns else ""))
 PY
 }
 p=prm
