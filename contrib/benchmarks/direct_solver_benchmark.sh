@@ -34,4 +34,5 @@ for bx in 16 32 64; do
     --set "Mesh/Blocks x=$bx" --set "Time/End time=1"
 done
 row "two_disks (P1 ghost penalty), to t = 0.5" prm/two_disks.prm --set "Time/End time=0.5"
+row "column_collapse (P1 ghost penalty, floor beyond the column)" prm/column_collapse.prm
 row "vibrating_bar_small_ps (PS consistent, 2,000 steps)" prm/vibrating_bar_small_ps.prm

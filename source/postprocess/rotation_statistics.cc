@@ -15,6 +15,32 @@ namespace psmpm
 {
   namespace Postprocess
   {
+    namespace
+    {
+      /// sum_k phi_k d_k x C d_k, d_k = X_k - x (X the control points of
+      /// the particle's cell's functions @p dofs): C_yx D_xx + (C_yy -
+      /// C_xx) D_xy - C_xy D_yy with D = sum_k phi_k d_k d_k^T, three
+      /// independent sums instead of one chain of additions.
+      double
+      affine_angular_momentum(const double                *phi,
+                              const unsigned int          *dofs,
+                              const unsigned int           n,
+                              const std::vector<Point<2>> &X,
+                              const Point<2>              &x,
+                              const Tensor<2, 2>          &C)
+      {
+        double Dxx = 0, Dxy = 0, Dyy = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const Tensor<1, 2> d = X[dofs[k]] - x;
+            Dxx += phi[k] * d[0] * d[0];
+            Dxy += phi[k] * d[0] * d[1];
+            Dyy += phi[k] * d[1] * d[1];
+          }
+        return C[1][0] * Dxx + (C[1][1] - C[0][0]) * Dxy - C[0][1] * Dyy;
+      }
+    } // namespace
+
     template <int dim>
     typename RotationStatistics<dim>::Values
     RotationStatistics<dim>::compute(const StateView<dim> &state,
@@ -126,22 +152,13 @@ namespace psmpm
               if (affine && (C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
                              C[1][1] != 0))
                 {
-                  // sum_k phi_k d_k x C d_k, d_k = X_k - x, is
-                  // C_yx D_xx + (C_yy - C_xx) D_xy - C_xy D_yy with D =
-                  // sum_k phi_k d_k d_k^T: three independent sums instead
-                  // of one chain of additions through local.h.
-                  const unsigned int base = particles.cell[p] * n;
-                  const double      *phi  = &state.shape_values[p * n];
-                  double             Dxx = 0, Dxy = 0, Dyy = 0;
-                  for (unsigned int k = 0; k < n; ++k)
-                    {
-                      const Tensor<1, 2> d = control_points[dofs[base + k]] - x;
-                      Dxx += phi[k] * d[0] * d[0];
-                      Dxy += phi[k] * d[0] * d[1];
-                      Dyy += phi[k] * d[1] * d[1];
-                    }
-                  local.h += m * (C[1][0] * Dxx + (C[1][1] - C[0][0]) * Dxy -
-                                  C[0][1] * Dyy);
+                  local.h +=
+                    m * affine_angular_momentum(&state.shape_values[p * n],
+                                                &dofs[particles.cell[p] * n],
+                                                n,
+                                                control_points,
+                                                x,
+                                                C);
                 }
               local.mass += m;
               local.first += m * x;

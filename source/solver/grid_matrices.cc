@@ -136,7 +136,7 @@ namespace psmpm
                                     layout,
                                     mass,
                                     patches);
-      finish_assembly(matrices[d], fixed, layout, lumped);
+      finish_assembly(matrices[d], layout, lumped);
     }
 
     template <int dim>
@@ -150,7 +150,7 @@ namespace psmpm
       TrilinosWrappers::SparseMatrix &M = matrices[0];
       M                                 = 0;
       add_blocks(M, nullptr, layout, mass, patches);
-      finish_assembly(M, nullptr, layout, lumped);
+      finish_assembly(M, layout, lumped);
     }
 
     template <int dim>
@@ -194,7 +194,6 @@ namespace psmpm
     template <int dim>
     void
     GridMatrices<dim>::finish_assembly(TrilinosWrappers::SparseMatrix &target,
-                                       const char                     *fixed,
                                        const GridDofLayout<dim>       &layout,
                                        const std::vector<double>      &lumped)
     {
@@ -202,11 +201,14 @@ namespace psmpm
       // A DoF whose support holds no particle has an empty row: give it
       // a unit diagonal so that its (zero) coefficient is well defined.
       // (Rows of patch blocks, e.g. the ghost penalty, may hold a DoF
-      // without particle mass: it keeps its row.)
+      // without particle mass: it keeps its row.) A fixed DoF that no
+      // block reaches too: CG skips its row, but the direct solver
+      // (DenseCholesky) factors the whole matrix, and a zero row made it
+      // fall back to CG at every step of every scene whose fixed
+      // boundary reaches beyond the material (a column on a long floor).
       const auto &global = layout.relevant_global();
       for (const unsigned int l : layout.owned_to_relevant())
-        if (lumped[l] == 0 && (fixed == nullptr || !fixed[l]) &&
-            target.diag_element(global[l]) == 0)
+        if (lumped[l] == 0 && target.diag_element(global[l]) == 0)
           target.set(global[l], global[l], 1.0);
       target.compress(VectorOperation::insert);
     }

@@ -128,11 +128,10 @@ namespace psmpm
                                   const GridDofLayout<dim>        &layout,
                                   const std::vector<double>       &mass,
                                   const std::vector<PatchBlock>   &patches);
-      /// Compress @p target and give rows without particle mass (not
-      /// flagged in @p fixed) a unit diagonal.
+      /// Compress @p target and give rows without particle mass and
+      /// without a diagonal entry a unit diagonal.
       static void
       finish_assembly(TrilinosWrappers::SparseMatrix &target,
-                      const char                     *fixed,
                       const GridDofLayout<dim>       &layout,
                       const std::vector<double>      &lumped);
 

@@ -154,8 +154,8 @@ namespace psmpm
           const double gamma = grid.strategy_parameters().stabilization;
           if (gamma == 0)
             return false;
-          if (faces.empty())
-            compute_pair_patches(grid);
+          if (!paired)
+            find_pairs(grid);
           // fill decides which cells hold particles, sampled (fill capped
           // by the particles' sampling of the linear fields, where
           // caps_fill()) the weights: both in one reduction.
@@ -177,12 +177,12 @@ namespace psmpm
           grid.cell_exchange().owners_to_neighbours(fill.data());
           if (cap)
             grid.cell_exchange().owners_to_neighbours(fill.data() + n_c);
-          const double     *sampled = fill.data() + (cap ? n_c : 0);
-          const auto       &active  = grid.lumped_mass();
-          const double      rho     = grid.reference_density();
-          std::vector<bool> treated(active.size(), false);
-          for (auto &f : faces)
+          const double *sampled = fill.data() + (cap ? n_c : 0);
+          const double  rho     = grid.reference_density();
+          active_faces.clear();
+          for (unsigned int i = 0; i < faces.size(); ++i)
             {
+              const Face  &f = faces[i];
               const double w =
                 gamma * rho *
                 (1. - std::min(sampled[f.cells[0]], sampled[f.cells[1]]));
@@ -197,8 +197,12 @@ namespace psmpm
               // polynomial extension.
               if (!(fill[f.cells[0]] > 0 && fill[f.cells[1]] > 0))
                 continue;
-              add_block(grid, pair_pool, f, w, treated);
+              active_faces.emplace_back(i, w);
             }
+          compute_pair_patches(grid);
+          std::vector<bool> treated(grid.lumped_mass().size(), false);
+          for (const auto &[i, w] : active_faces)
+            add_block(grid, pair_pool, faces[i], w, treated);
           penalize_lone_cells(grid, fill.data(), sampled, treated);
           unsigned int n_treated = 0;
           const auto  &global    = grid.relevant_global_indices();
@@ -304,7 +308,7 @@ namespace psmpm
           std::vector<unsigned int>            identity(n);
           for (unsigned int k = 0; k < n; ++k)
             identity[k] = k;
-          for (const auto &cell : dh.active_cell_iterators())
+          for (const auto &cell : cell_iterators)
             {
               const unsigned int c = cell->active_cell_index();
               if (!wanted[c])
@@ -370,22 +374,20 @@ namespace psmpm
           }
         };
 
-        /// One patch per pair of cells sharing a vertex, one of them owned
-        /// (each pair once over all ranks: the rank of the smaller
-        /// subdomain).
+        /// The pairs of cells sharing a vertex, one of them owned (each
+        /// pair once over all ranks: the rank of the smaller subdomain),
+        /// and every cell's neighbours. Their matrices are computed when
+        /// a step first needs them (compute_pair_patches()): only pairs
+        /// with a cell that is not filled, both holding particles, ever
+        /// get a block, and on a mesh larger than the body most pairs
+        /// never do.
         void
-        compute_pair_patches(const GridSystem<dim> &grid)
+        find_pairs(const GridSystem<dim> &grid)
         {
-          const auto                          &space = grid.get_space();
-          const auto                          &dh    = grid.get_dof_handler();
-          const auto                          &rel   = grid.relevant_dofs();
-          const unsigned int                   n     = grid.dofs_per_cell;
-          const unsigned int                   k     = space.degree();
-          std::vector<types::global_dof_index> dofs(n);
-          std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
-            grid.n_cells);
+          const auto &dh = grid.get_dof_handler();
+          cell_iterators.resize(grid.n_cells);
           for (const auto &cell : dh.active_cell_iterators())
-            cells[cell->active_cell_index()] = cell;
+            cell_iterators[cell->active_cell_index()] = cell;
           // Sorted and unique: the order of std::set, without a node per
           // pair.
           std::vector<std::pair<unsigned int, unsigned int>> pairs;
@@ -398,68 +400,90 @@ namespace psmpm
           pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
           neighbours.assign(grid.n_cells, {});
           lone.resize(grid.n_cells);
+          const unsigned int rank =
+            Utilities::MPI::this_mpi_process(grid.get_communicator());
           for (const auto &[a, b] : pairs)
             {
               neighbours[a].push_back(b);
               neighbours[b].push_back(a);
+              const auto &cell  = cell_iterators[a];
+              const auto &other = cell_iterators[b];
+              if (!cell->is_locally_owned() && !other->is_locally_owned())
+                continue;
+              if (cell->is_locally_owned() != other->is_locally_owned() &&
+                  std::min(cell->subdomain_id(), other->subdomain_id()) != rank)
+                continue;
+              Face face;
+              face.cells = {{a, b}};
+              faces.push_back(face);
             }
-          // Reused from pair to pair (a mesh has about six pairs per
-          // cell).
+          paired = true;
+        }
+
+        /// The matrices of the pairs in active_faces that have none yet,
+        /// appended to pair_pool before any of this step's blocks points
+        /// into it.
+        void
+        compute_pair_patches(const GridSystem<dim> &grid)
+        {
+          const auto                          &space = grid.get_space();
+          const auto                          &dh    = grid.get_dof_handler();
+          const auto                          &rel   = grid.relevant_dofs();
+          std::vector<types::global_dof_index> dofs(grid.dofs_per_cell);
+          // Reused from pair to pair.
           std::vector<unsigned int>              pair_cells(2), patch_dofs;
           std::vector<std::vector<unsigned int>> map(2);
           std::vector<types::global_dof_index>   patch;
-          for (const auto &[a, b] : pairs)
+          for (const auto &iw : active_faces)
             {
-              {
-                const auto &cell  = cells[a];
-                const auto &other = cells[b];
-                if (!cell->is_locally_owned() && !other->is_locally_owned())
-                  continue;
-                if (cell->is_locally_owned() != other->is_locally_owned() &&
-                    std::min(cell->subdomain_id(), other->subdomain_id()) !=
-                      Utilities::MPI::this_mpi_process(grid.get_communicator()))
-                  continue;
-                Face face;
-                face.cells = {
-                  {cell->active_cell_index(), other->active_cell_index()}};
-                // Patch DoFs and, per cell, the map cell DoF -> patch.
-                patch.clear();
-                for (unsigned int s = 0; s < 2; ++s)
-                  {
-                    map[s].clear();
-                    (s == 0 ? cell : other)->get_dof_indices(dofs);
-                    for (const auto g : dofs)
-                      {
-                        auto it = std::find(patch.begin(), patch.end(), g);
-                        map[s].push_back(it - patch.begin());
-                        if (it == patch.end())
-                          patch.push_back(g);
-                      }
-                  }
-                patch_dofs.clear();
-                for (const auto g : patch)
-                  patch_dofs.push_back(rel.index_within_set(g));
-                // Polynomials centred between the cells, scaled by them.
-                const Point<dim> x0 = (cell->center() + other->center()) / 2.;
-                const double h = std::max(cell->diameter(), other->diameter());
-                pair_cells     = {face.cells[0], face.cells[1]};
-                pair_pool.append(face,
-                                 patch_dofs,
-                                 polynomial_complement(space,
-                                                       dh,
-                                                       pair_cells,
-                                                       map,
-                                                       patch.size(),
-                                                       k,
-                                                       x0,
-                                                       h));
-                faces.push_back(face);
-              }
+              Face &face = faces[iw.first];
+              if (face.n > 0)
+                continue;
+              const auto &cell  = cell_iterators[face.cells[0]];
+              const auto &other = cell_iterators[face.cells[1]];
+              // Patch DoFs and, per cell, the map cell DoF -> patch.
+              patch.clear();
+              for (unsigned int s = 0; s < 2; ++s)
+                {
+                  map[s].clear();
+                  (s == 0 ? cell : other)->get_dof_indices(dofs);
+                  for (const auto g : dofs)
+                    {
+                      auto it = std::find(patch.begin(), patch.end(), g);
+                      map[s].push_back(it - patch.begin());
+                      if (it == patch.end())
+                        patch.push_back(g);
+                    }
+                }
+              patch_dofs.clear();
+              for (const auto g : patch)
+                patch_dofs.push_back(rel.index_within_set(g));
+              // Polynomials centred between the cells, scaled by them.
+              const Point<dim> x0 = (cell->center() + other->center()) / 2.;
+              const double h = std::max(cell->diameter(), other->diameter());
+              pair_cells     = {face.cells[0], face.cells[1]};
+              pair_pool.append(face,
+                               patch_dofs,
+                               polynomial_complement(space,
+                                                     dh,
+                                                     pair_cells,
+                                                     map,
+                                                     patch.size(),
+                                                     space.degree(),
+                                                     x0,
+                                                     h));
             }
         }
 
-        std::vector<Face>   faces;
-        PatchPool           pair_pool;
+        /// Whether find_pairs() has run.
+        bool              paired = false;
+        std::vector<Face> faces;
+        PatchPool         pair_pool;
+        /// The faces that get a block this step, and their weights.
+        std::vector<std::pair<unsigned int, double>> active_faces;
+        /// By active cell index.
+        std::vector<typename DoFHandler<dim>::active_cell_iterator>
+                            cell_iterators;
         std::vector<double> measure;
         /// The cells sharing a vertex with each cell.
         std::vector<std::vector<unsigned int>> neighbours;
