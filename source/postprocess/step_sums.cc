@@ -19,8 +19,7 @@ namespace psmpm
     void
     StepSums<dim>::updated(const StateView<dim> &state,
                            const std::size_t     first,
-                           const std::size_t     last,
-                           const bool            located)
+                           const std::size_t     last)
     {
       if (first == 0)
         {
@@ -28,18 +27,16 @@ namespace psmpm
           rotation_sums = typename RotationStatistics<dim>::Sums();
           covered       = 0;
           complete      = false;
-          affine        = state.carries_affine;
         }
-      // Chunks out of order, a rotation statistic that still has
-      // collective work to do (its first call), or an affine part without
-      // the new basis values fall back to the pass.
-      if (first != covered || !rotation.prepared() || (affine && !located))
+      // Chunks out of order, or a rotation statistic that still has
+      // collective work to do (its first call), fall back to the pass.
+      if (first != covered || !rotation.prepared())
         {
           covered = std::numeric_limits<std::size_t>::max();
           return;
         }
       energies.accumulate(state, first, last, energy_sums);
-      rotation.accumulate(state, first, last, affine, rotation_sums);
+      rotation.accumulate(state, first, last, false, rotation_sums);
       covered  = last;
       complete = last == state.particles.size();
     }
@@ -51,7 +48,7 @@ namespace psmpm
       // Every rank makes the same collective calls on either path: the
       // energies' reduction, then the rotation's (prepare() has nothing
       // collective left once the chunks are used).
-      const bool use_chunks = complete && affine == affine_part;
+      const bool use_chunks = complete && !affine_part;
       complete              = false;
       covered               = 0;
       if (use_chunks)

@@ -70,15 +70,14 @@ namespace psmpm
     void
     Postprocessors<dim>::updated(const State<dim> &state,
                                  const std::size_t first,
-                                 const std::size_t last,
-                                 const bool        located,
-                                 const bool        carries_affine)
+                                 const std::size_t last)
     {
       Postprocess::StateView<dim> view = state;
       view.reference                   = reference;
-      view.carries_affine              = carries_affine;
+      // Schemes that carry affine matrices are not observed.
+      view.carries_affine = false;
       for (const auto p : observers)
-        p->updated(view, first, last, located);
+        p->updated(view, first, last);
     }
 
     template <int dim>

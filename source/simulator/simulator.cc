@@ -474,7 +474,9 @@ namespace psmpm
       TransferScheme<dim> &transfer = *transfers.scheme;
       state.dt                      = dt;
       transfer.observe_updated_chunks(
-        postprocessors.observes_updated_chunks() ? &postprocessors : nullptr);
+        transfer.carries_affine() || !postprocessors.observes_updated_chunks() ?
+          nullptr :
+          &postprocessors);
       // On a grid that moves with the material the particles keep their
       // cells (and the scheme has evaluated the basis on the moved grid).
       // Otherwise the scheme may locate them chunk by chunk as it moves

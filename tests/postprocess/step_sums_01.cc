@@ -10,9 +10,8 @@
 // chunk boundaries): after a run of ten
 // steps, the final angular momentum (summary) equals a fresh pass on the
 // final state, and the last row's energies equal the pass's to the
-// printed digits. MUSL, USL, OTM and APIC (with the angular momentum's
-// affine part, summed after each chunk is located) sum on chunks, with the
-// P1 and the Powell-Sabin basis alike.
+// printed digits. MUSL, USL and OTM sum on chunks; APIC and the P1 and
+// Powell-Sabin bases alike.
 #include <deal.II/base/mpi.h>
 
 #include <psmpm/postprocess/energies.h>

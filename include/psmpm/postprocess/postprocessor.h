@@ -7,9 +7,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <psmpm/base/registry.h>
-#include <psmpm/base/summary.h>
 #include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
+#include <psmpm/base/summary.h>
 
 #include <cstddef>
 #include <limits>
@@ -99,7 +99,8 @@ namespace psmpm
       }
 
       /// Whether updated() is to be called for the chunks of particles
-      /// the transfer scheme updates.
+      /// the transfer scheme updates (not for schemes that carry affine
+      /// matrices).
       virtual bool
       observes_updated_chunks() const
       {
@@ -112,13 +113,11 @@ namespace psmpm
       /// (TransferScheme::move_and_update_material()): sums over them here
       /// save a pass of their own. A chunk that does not start where the
       /// last ended, or a step without chunks, asks for a pass in
-      /// execute(). @p located: the particles also have their new cells
-      /// and basis values (UpdatedChunkObserver).
+      /// execute().
       virtual void
       updated(const StateView<dim> &,
               const std::size_t /*first*/,
-              const std::size_t /*last*/,
-              const bool /*located*/)
+              const std::size_t /*last*/)
       {
       }
 

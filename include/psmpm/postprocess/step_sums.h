@@ -26,11 +26,10 @@ namespace psmpm
      *
      * compute() falls back to the pass when the chunks did not cover all
      * particles of the step that just ended: the first statistics of a
-     * run, a scheme that updates its particles otherwise, a step
-     * abandoned before its update, and with affine matrices (APIC) a
-     * chunk that was not located (the angular momentum's affine part
-     * reads the basis at the particles' new cells: a particle leaving the
-     * rank has none here).
+     * run, a scheme that updates its particles otherwise (APIC), a step
+     * abandoned before its update. Schemes that carry affine matrices are
+     * not observed: the angular momentum's affine part reads the basis at
+     * the particles' new cells, evaluated after the update.
      */
     template <int dim>
     class StepSums
@@ -42,8 +41,7 @@ namespace psmpm
       void
       updated(const StateView<dim> &state,
               const std::size_t     first,
-              const std::size_t     last,
-              const bool            located);
+              const std::size_t     last);
 
       /// The energies and rotation values of @p state after a step (or at
       /// the start): reduced from the chunks if they covered all its
@@ -60,8 +58,6 @@ namespace psmpm
       std::size_t covered = 0;
       /// Whether the chunks reached the last particle.
       bool complete = false;
-      /// Whether the chunks' angular momentum has the affine part.
-      bool affine = false;
     };
   } // namespace Postprocess
 } // namespace psmpm

@@ -55,7 +55,7 @@ namespace psmpm
       load(const Archive &archive);
       void
       fill_summary(const Postprocess::StateView<dim> &view,
-                   Summary                           &summary) const;
+                   Summary              &summary) const;
 
       /// The energies of the last execute() (zero if no postprocessor
       /// computes them).
@@ -75,9 +75,7 @@ namespace psmpm
       void
       updated(const State<dim> &state,
               const std::size_t first,
-              const std::size_t last,
-              const bool        located,
-              const bool        carries_affine) override;
+              const std::size_t last) override;
 
     private:
       std::vector<std::unique_ptr<Postprocess::Postprocessor<dim>>> list;

@@ -24,14 +24,10 @@ namespace psmpm
   {
     /**
      * Told of every chunk of particles whose update a scheme has finished
-     * in a step (positions, velocities, affine matrices, stresses and
-     * volumes final), in particle order from the first particle, while the
-     * chunk is still in the cache: the per-step statistics sum over the
-     * particles there instead of in a pass of their own
-     * (Postprocess::StepSums). @p located: the chunk's particles also
-     * have their new cells and basis values, and none of them leaves this
-     * rank. @p carries_affine: the scheme's particles carry affine
-     * matrices.
+     * in a step (positions, velocities, stresses and volumes final), in
+     * particle order from the first particle, while the chunk is still in
+     * the cache: the per-step statistics sum over the particles there
+     * instead of in a pass of their own (Postprocess::StepSums).
      */
     template <int dim>
     class UpdatedChunkObserver
@@ -42,9 +38,7 @@ namespace psmpm
       virtual void
       updated(const State<dim> &state,
               const std::size_t first,
-              const std::size_t last,
-              const bool        located,
-              const bool        carries_affine) = 0;
+              const std::size_t last) = 0;
     };
 
     /**
@@ -314,20 +308,6 @@ namespace psmpm
       std::unique_ptr<VolumetricAveraging<dim>> averaging;
       std::vector<Tensor<2, dim>>               all_increments;
 
-      /// The chunk observer's updated(), if there is one.
-      void
-      observe(const State<dim> &state,
-              const std::size_t first,
-              const std::size_t last,
-              const bool        located)
-      {
-        if (chunk_observer != nullptr)
-          chunk_observer->updated(state,
-                                  first,
-                                  last,
-                                  located,
-                                  carries_affine());
-      }
       /// The located particles [first, last) of update_in_chunks() into
       /// the cell arrays (@p kernels), without those that left this rank.
       template <typename Kernels>

@@ -62,20 +62,14 @@ namespace psmpm
                           increments,
                           chunk_volume_ratio.data(),
                           monitor);
+          if (chunk_observer != nullptr)
+            chunk_observer->updated(state, first, last);
           laps.lap("update");
           if (relocation == nullptr)
-            {
-              observe(state, first, last, false);
-              laps.lap("update");
-              continue;
-            }
+            continue;
           const bool some_left =
             relocation->locate(state, monitor, first, last) > 0;
           laps.lap("locate");
-          // After the location: the angular momentum's affine part reads
-          // the basis at the new cells.
-          observe(state, first, last, !some_left);
-          laps.lap("update");
           if (!accumulate)
             continue;
           add_located_to_cells(state, first, last, some_left, kernels);

@@ -41,10 +41,9 @@ namespace psmpm
         void
         updated(const StateView<dim> &state,
                 const std::size_t     first,
-                const std::size_t     last,
-                const bool            located) override
+                const std::size_t     last) override
         {
-          sums.updated(state, first, last, located);
+          sums.updated(state, first, last);
         }
 
         void
