@@ -201,11 +201,11 @@ namespace psmpm
       // A DoF whose support holds no particle has an empty row: give it
       // a unit diagonal so that its (zero) coefficient is well defined.
       // (Rows of patch blocks, e.g. the ghost penalty, may hold a DoF
-      // without particle mass: it keeps its row.) A fixed DoF that no
-      // block reaches too: CG skips its row, but the direct solver
-      // (DenseCholesky) factors the whole matrix, and a zero row made it
-      // fall back to CG at every step of every scene whose fixed
-      // boundary reaches beyond the material (a column on a long floor).
+      // without particle mass: it keeps its row.) Fixed DoFs too: CG
+      // skips their rows, but the direct solver (DenseCholesky) factors
+      // the whole matrix, which a zero row makes singular wherever a
+      // fixed boundary reaches beyond the material (a column on a long
+      // floor).
       const auto &global = layout.relevant_global();
       for (const unsigned int l : layout.owned_to_relevant())
         if (lumped[l] == 0 && target.diag_element(global[l]) == 0)
