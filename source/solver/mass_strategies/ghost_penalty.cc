@@ -289,34 +289,25 @@ namespace psmpm
         }
 
         /// The patches of the cells in lone_now that have none yet: their
-        /// DoFs and the complement of the constants on each, in one pass
-        /// over the cells (a fragmenting body makes many lone cells in a
-        /// step).
+        /// DoFs and the complement of the constants on each.
         void
         compute_lone_patches(const GridSystem<dim> &grid)
         {
-          std::vector<bool> wanted(lone.size(), false);
-          bool              any = false;
-          for (const auto &cw : lone_now)
-            if (lone[cw.first].n == 0)
-              any = wanted[cw.first] = true;
-          if (!any)
-            return;
           const auto                          &dh = grid.get_dof_handler();
           const unsigned int                   n  = grid.dofs_per_cell;
           std::vector<types::global_dof_index> dofs(n);
-          std::vector<unsigned int>            identity(n);
+          std::vector<unsigned int>            identity(n), patch(n);
           for (unsigned int k = 0; k < n; ++k)
             identity[k] = k;
-          for (const auto &cell : cell_iterators)
+          for (const auto &cw : lone_now)
             {
-              const unsigned int c = cell->active_cell_index();
-              if (!wanted[c])
+              const unsigned int c = cw.first;
+              if (lone[c].n > 0)
                 continue;
-              std::vector<unsigned int> patch;
+              const auto &cell = cell_iterators[c];
               cell->get_dof_indices(dofs);
               for (unsigned int k = 0; k < n; ++k)
-                patch.push_back(grid.relevant_dofs().index_within_set(dofs[k]));
+                patch[k] = grid.relevant_dofs().index_within_set(dofs[k]);
               lone[c].cells = {{c, c}};
               lone_pool.append(lone[c],
                                patch,
