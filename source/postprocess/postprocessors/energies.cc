@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <psmpm/base/archive.h>
+#include <psmpm/base/summary.h>
 #include <psmpm/postprocess/energies.h>
 #include <psmpm/postprocess/postprocessor.h>
 #include <psmpm/postprocess/rotation_statistics.h>
@@ -68,6 +70,10 @@ namespace psmpm
           balance.total    = e.total();
           balance.scale    = e.scale();
           balance.momentum = e.momentum.norm();
+          if (!have_initial_momentum)
+            initial_momentum = e.momentum;
+          have_initial_momentum = true;
+          momentum              = e.momentum;
         }
 
         bool
@@ -81,18 +87,42 @@ namespace psmpm
         save(Archive &archive) const override
         {
           rotation.save(archive);
+          std::vector<double> p(&initial_momentum[0],
+                                &initial_momentum[0] + dim);
+          if (have_initial_momentum)
+            archive.put("energies/initial_momentum", p);
         }
 
         void
         load(const Archive &archive) override
         {
           rotation.load(archive);
+          // Checkpoints written before the entry existed: the resumed
+          // run's first statistics stand in for the initial momentum.
+          have_initial_momentum = archive.has("energies/initial_momentum");
+          if (have_initial_momentum)
+            {
+              const auto &p = archive.get("energies/initial_momentum", dim);
+              for (unsigned int d = 0; d < dim; ++d)
+                initial_momentum[d] = p[d];
+            }
         }
 
         void
         fill_summary(const StateView<dim> &, Summary &summary) const override
         {
           rotation.fill_summary(summary);
+          // Full precision (statistics.txt keeps 9 digits): what a free
+          // body conserves to round-off.
+          const char *names[] = {"x", "y"};
+          if (have_initial_momentum)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                summary.set(std::string("momentum_") + names[d] + "_initial",
+                            initial_momentum[d]);
+                summary.set(std::string("momentum_") + names[d] + "_final",
+                            momentum[d]);
+              }
         }
 
       private:
@@ -100,6 +130,9 @@ namespace psmpm
         RotationStatistics<dim> rotation;
         StepSums<dim>           sums{energies, rotation};
         EnergyBalance           balance;
+        /// The particles' momentum at the first and the last statistics.
+        bool           have_initial_momentum = false;
+        Tensor<1, dim> initial_momentum, momentum;
       };
     } // namespace
 
