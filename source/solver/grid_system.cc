@@ -102,11 +102,25 @@ namespace psmpm
           "that guess, which measures what the step changes: the solve's "
           "error is then about this fraction of the step's change instead of "
           "Solver tolerance times the whole field. Solves from zero use "
-          "Solver tolerance alone, and so do components without any fixed "
-          "DoF (a free body: exact solves conserve its momentum and angular "
-          "momentum to round-off). 0: Solver tolerance alone, always "
-          "(doc/performance.md, \"What the time step needs of the mass "
-          "solves\").");
+          "Solver tolerance alone. Components without any fixed DoF (free "
+          "bodies) use Free body step tolerance instead when solved "
+          "together, and Solver tolerance alone when solved one by one. 0: "
+          "Solver tolerance alone (doc/performance.md, \"What the time step "
+          "needs of the mass solves\").");
+        prm.declare_entry(
+          "Free body step tolerance",
+          "1e-8",
+          Patterns::Double(0),
+          "Step tolerance for the components that no DoF constrains on any "
+          "rank (free bodies), when the components are solved together "
+          "(block jacobi or jacobi, Dirichlet conditions only). After the "
+          "CG a Galerkin correction on the rigid modes (a uniform velocity "
+          "per free component, and the rotation when every component is "
+          "free) makes the residual orthogonal to them, so that momentum "
+          "stays conserved to round-off at any value; the angular momentum "
+          "keeps the part of the residual that MUSL's position update "
+          "carries (doc/performance.md, \"What the time step needs of the "
+          "mass solves\"). 0: Solver tolerance alone.");
         prm.declare_entry("Maximum iterations",
                           "1000",
                           Patterns::Integer(1),
@@ -256,15 +270,16 @@ namespace psmpm
     GridSystem<dim>::Parameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Mass matrix");
-      type           = prm.get("Type");
-      threshold      = prm.get_double("Threshold");
-      tolerance      = prm.get_double("Solver tolerance");
-      step_tolerance = prm.get_double("Step tolerance");
-      max_iterations = prm.get_integer("Maximum iterations");
-      direct_size    = prm.get_integer("Direct solver size");
-      warm_start     = prm.get_bool("Warm start");
-      preconditioner = prm.get("Preconditioner");
-      stabilization  = prm.get_double("Stabilization");
+      type                = prm.get("Type");
+      threshold           = prm.get_double("Threshold");
+      tolerance           = prm.get_double("Solver tolerance");
+      step_tolerance      = prm.get_double("Step tolerance");
+      free_step_tolerance = prm.get_double("Free body step tolerance");
+      max_iterations      = prm.get_integer("Maximum iterations");
+      direct_size         = prm.get_integer("Direct solver size");
+      warm_start          = prm.get_bool("Warm start");
+      preconditioner      = prm.get("Preconditioner");
+      stabilization       = prm.get_double("Stabilization");
       sampling_stabilization =
         parse_sampling_stabilization(prm.get("Sampling stabilization"));
       multigrid_smoother        = prm.get("Multigrid smoother");
@@ -277,6 +292,10 @@ namespace psmpm
       AssertThrow(step_tolerance >= 0 && step_tolerance < 1,
                   ExcMessage("Mass matrix/Step tolerance = " +
                              prm_value(step_tolerance) +
+                             ": must lie in [0, 1)."));
+      AssertThrow(free_step_tolerance >= 0 && free_step_tolerance < 1,
+                  ExcMessage("Mass matrix/Free body step tolerance = " +
+                             prm_value(free_step_tolerance) +
                              ": must lie in [0, 1)."));
     }
 
@@ -299,6 +318,7 @@ namespace psmpm
       , mass_solver(typename MassSolver<dim>::Settings{
           parameters.tolerance,
           parameters.step_tolerance,
+          parameters.free_step_tolerance,
           parameters.max_iterations,
           parameters.preconditioner,
           space.dofs_per_vertex(),

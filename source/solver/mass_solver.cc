@@ -29,6 +29,20 @@ namespace psmpm
     {
       this->direct = direct;
       preconditioners.reinit(grid);
+      if (grid.uses_matrix())
+        {
+          // The shared matrix' rows are the owned DoFs in ascending order.
+          const auto all =
+            grid.get_space().control_points(grid.get_dof_handler());
+          std::vector<long long>  rows;
+          std::vector<Point<dim>> points;
+          for (const auto i : grid.locally_owned_dofs())
+            {
+              rows.push_back(i);
+              points.push_back(all[i]);
+            }
+          rigid_modes.reinit(std::move(rows), std::move(points));
+        }
     }
 
     template <int dim>
@@ -93,9 +107,10 @@ namespace psmpm
     {
       // A free component's exact solve conserves its momentum (and, if
       // all are free, the angular momentum) to round-off; a looser one
-      // would lose 1e-9 of a spinning block's angular momentum in a
-      // quarter turn (doc/performance.md). Where DoFs are fixed, the
-      // boundary exchanges momentum anyway and the step decides.
+      // without the rigid-mode correction would lose 1e-9 of a spinning
+      // block's angular momentum in a quarter turn (doc/performance.md).
+      // Where DoFs are fixed, the boundary exchanges momentum anyway and
+      // the step decides.
       return free_component[d] ? 0. : settings.step_tolerance;
     }
 
@@ -179,7 +194,9 @@ namespace psmpm
       std::vector<double>                    step_tolerances;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          step_tolerances.push_back(step_tolerance(d));
+          step_tolerances.push_back(free_component[d] ?
+                                      settings.free_step_tolerance :
+                                      settings.step_tolerance);
           double *const b = (*rhs_columns)[d];
           for (const unsigned int j : fixed_rows[d])
             b[j] = 0;
@@ -194,6 +211,10 @@ namespace psmpm
                            settings.tolerance,
                            step_tolerances,
                            settings.max_iterations);
+      rigid_modes.correct(M.trilinos_matrix(),
+                          free_component,
+                          *rhs_columns,
+                          *solution_columns);
       condition_number = std::max(condition_number, result.condition_number);
       unsigned int iterations = 0;
       for (const unsigned int i : result.iterations)

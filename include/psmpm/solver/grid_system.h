@@ -77,9 +77,13 @@ namespace psmpm
         /// last step's field also ends once its residual has dropped by
         /// this factor from the guess' (0: off), for components with
         /// constrained DoFs.
-        double       step_tolerance = 1e-6;
-        unsigned int max_iterations = 1000;
-        std::string  preconditioner = "block jacobi";
+        double step_tolerance = 1e-6;
+        /// Mass matrix/Free body step tolerance: the same for components
+        /// that no DoF constrains, solved together (their momentum kept
+        /// by RigidModeCorrection).
+        double       free_step_tolerance = 1e-8;
+        unsigned int max_iterations      = 1000;
+        std::string  preconditioner      = "block jacobi";
         /// Serial systems with at most this many DoFs are solved by a
         /// dense Cholesky factorization instead of CG (0: never).
         unsigned int direct_size = 600;

@@ -13,6 +13,7 @@
 #include <psmpm/solver/dense_cholesky.h>
 #include <psmpm/solver/grid_dof_layout.h>
 #include <psmpm/solver/mass_preconditioners.h>
+#include <psmpm/solver/rigid_mode_correction.h>
 
 #include <Epetra_Map.h>
 #include <Epetra_MultiVector.h>
@@ -48,6 +49,7 @@ namespace psmpm
       {
         double                                        tolerance;
         double                                        step_tolerance;
+        double                                        free_step_tolerance;
         unsigned int                                  max_iterations;
         std::string                                   preconditioner;
         unsigned int                                  dofs_per_vertex;
@@ -124,8 +126,10 @@ namespace psmpm
       const double *
       solution_column(const unsigned int d) const;
       /// Together: all components by ComponentCG from the guess, with
-      /// the fixed rows of the right-hand sides zeroed; returns the sum
-      /// of their iterations.
+      /// the fixed rows of the right-hand sides zeroed, then the rigid
+      /// modes of the free components corrected (RigidModeCorrection),
+      /// so that free components may stop at Free body step tolerance;
+      /// returns the sum of their iterations.
       unsigned int
       solve_components(const TrilinosWrappers::SparseMatrix &M,
                        double                               &condition_number);
@@ -147,8 +151,9 @@ namespace psmpm
       }
 
     private:
-      /// Mass matrix/Step tolerance for component @p d: 0 (off) for a
-      /// free component.
+      /// Mass matrix/Step tolerance for component @p d solved alone: 0
+      /// (off) for a free component, which has no rigid-mode correction
+      /// on that path.
       double
       step_tolerance(const unsigned int d) const;
       bool
@@ -171,10 +176,12 @@ namespace psmpm
       /// zero, and its matrix is neither assembled nor solved.
       std::array<bool, dim> fixed_everywhere{};
       /// Per component, whether no DoF is constrained on any rank (a free
-      /// body): its solves keep Solver tolerance alone, so that momentum
-      /// (and, with every component free, angular momentum) stays
-      /// conserved to round-off; Step tolerance applies to the others.
-      std::array<bool, dim> free_component{};
+      /// body): momentum (and, with every component free, angular
+      /// momentum) must stay conserved to round-off. Solved together,
+      /// the rigid-mode correction sees to it; solved alone, the
+      /// component keeps Solver tolerance.
+      std::array<bool, dim>    free_component{};
+      RigidModeCorrection<dim> rigid_modes;
       /// Together: per component the locally owned rows (owned order) it
       /// fixes, the solver and its columns.
       std::vector<std::vector<unsigned int>> fixed_rows;
