@@ -131,7 +131,13 @@ namespace psmpm
           for (unsigned int j = 0; j < owned_to_relevant.size(); ++j)
             if (constrained[owned_to_relevant[j]])
               fixed_rows[d].push_back(j);
-          preconditioners.initialize_masked(d, M, fixed_rows[d], generation);
+          // Components with the same fixed rows (all of a free body's)
+          // have the same masked matrix: one preconditioner serves them.
+          preconditioner_of[d] = d;
+          if (d > 0 && fixed_rows[d] == fixed_rows[d - 1])
+            preconditioner_of[d] = preconditioner_of[d - 1];
+          else
+            preconditioners.initialize_masked(d, M, fixed_rows[d], generation);
           factored[d] = false;
         }
     }
@@ -200,7 +206,7 @@ namespace psmpm
           double *const b = (*rhs_columns)[d];
           for (const unsigned int j : fixed_rows[d])
             b[j] = 0;
-          blocks.push_back(&preconditioners.block_jacobi(d));
+          blocks.push_back(&preconditioners.block_jacobi(preconditioner_of[d]));
         }
       const ComponentCG::Result result =
         component_cg.solve(M.trilinos_matrix(),

@@ -185,8 +185,11 @@ namespace psmpm
       /// Together: per component the locally owned rows (owned order) it
       /// fixes, the solver and its columns.
       std::vector<std::vector<unsigned int>> fixed_rows;
-      ComponentCG                            component_cg;
-      std::unique_ptr<Epetra_MultiVector>    rhs_columns, solution_columns;
+      /// Together: the component whose preconditioner component d uses
+      /// (the first one with the same fixed rows).
+      std::array<unsigned int, dim>       preconditioner_of{};
+      ComponentCG                         component_cg;
+      std::unique_ptr<Epetra_MultiVector> rhs_columns, solution_columns;
     };
   } // namespace Solver
 } // namespace psmpm
