@@ -123,6 +123,7 @@ namespace psmpm
       const unsigned int                    generation)
     {
       const auto &owned_to_relevant = layout.owned_to_relevant();
+      rigid_modes.matrix_changed();
       fixed_rows.resize(dim);
       for (unsigned int d = 0; d < dim; ++d)
         {

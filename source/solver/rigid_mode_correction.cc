@@ -7,7 +7,6 @@
 #include <psmpm/solver/rigid_mode_correction.h>
 
 #include <Epetra_Comm.h>
-#include <Epetra_Vector.h>
 
 namespace psmpm
 {
@@ -58,13 +57,19 @@ namespace psmpm
       indices = std::move(row_indices);
       points  = std::move(row_points);
       modes.reset();
+      modes_current = false;
     }
 
     template <int dim>
     void
-    RigidModeCorrection<dim>::set_modes(const Epetra_CrsMatrix   &M,
-                                        Epetra_MultiVector       &x,
-                                        const Epetra_MultiVector &b)
+    RigidModeCorrection<dim>::matrix_changed()
+    {
+      modes_current = false;
+    }
+
+    template <int dim>
+    void
+    RigidModeCorrection<dim>::set_modes(const Epetra_CrsMatrix &M)
     {
       const Epetra_Map &map = M.RowMap();
       if (!modes || !modes->Map().SameAs(map))
@@ -79,30 +84,34 @@ namespace psmpm
           modes    = std::make_unique<Epetra_MultiVector>(map, dim + 1);
           products = std::make_unique<Epetra_MultiVector>(map, dim + 1);
           residual = std::make_unique<Epetra_MultiVector>(map, dim);
-          diagonal = std::make_unique<Epetra_Vector>(map, false);
         }
-      M.ExtractDiagonalCopy(*diagonal);
       int    *offsets, *columns;
       double *values;
       const_cast<Epetra_CrsMatrix &>(M).ExtractCrsDataPointers(offsets,
                                                                columns,
                                                                values);
+      decoupled.clear();
       for (int j = 0; j < map.NumMyElements(); ++j)
         {
-          int nonzeros = 0;
+          // A row with one nonzero of a positive definite matrix: its
+          // diagonal, coupled to no other row.
+          int    nonzeros = 0;
+          double value    = 0;
           for (int k = offsets[j]; k < offsets[j + 1]; ++k)
-            nonzeros += values[k] != 0;
-          // A row coupled to no other: its exact solution, and no mode.
-          const double a_jj      = (*diagonal)[j];
-          const bool   decoupled = nonzeros == 1 && a_jj != 0;
-          if (decoupled)
-            for (unsigned int d = 0; d < dim; ++d)
-              x[d][j] = b[d][j] / a_jj;
-          (*modes)[0][j] = decoupled ? 0. : 1.;
+            if (values[k] != 0)
+              {
+                ++nonzeros;
+                value = values[k];
+              }
+          const bool alone = nonzeros == 1;
+          if (alone)
+            decoupled.emplace_back(j, value);
+          (*modes)[0][j] = alone ? 0. : 1.;
           for (unsigned int e = 0; e < dim; ++e)
-            (*modes)[e + 1][j] = decoupled ? 0. : points[j][e];
+            (*modes)[e + 1][j] = alone ? 0. : points[j][e];
         }
       M.Multiply(false, *modes, *products);
+      modes_current = true;
     }
 
     template <int dim>
@@ -115,7 +124,12 @@ namespace psmpm
       const std::vector<Mode<dim>> rigid = rigid_modes<dim>(free);
       if (rigid.empty())
         return;
-      set_modes(M, x, b);
+      if (!modes_current || !modes->Map().SameAs(M.RowMap()))
+        set_modes(M);
+      // A row coupled to no other: its exact solution, and no mode.
+      for (const auto &[j, a_jj] : decoupled)
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d][j] = b[d][j] / a_jj;
       M.Multiply(false, x, *residual);
       const int n = M.RowMap().NumMyElements();
       // S_mn = u_m . M u_n and h_dm = u_m . r_d, reduced together.

@@ -8,9 +8,9 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
-#include <Epetra_Vector.h>
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace psmpm
@@ -57,6 +57,12 @@ namespace psmpm
       reinit(std::vector<long long>  &&row_indices,
              std::vector<Point<dim>> &&row_points);
 
+      /// After each assembly of the matrix: the modes' products with it
+      /// are recomputed at the next correct() (MUSL's two solves of a
+      /// step share them).
+      void
+      matrix_changed();
+
       /**
        * Correct @p x (columns: components) for right-hand sides @p b on
        * the modes that @p free admits; does nothing if no component is
@@ -70,16 +76,16 @@ namespace psmpm
 
     private:
       /// The modes' single-component columns 1, x (, y) with the
-      /// decoupled rows zeroed, and their products with M.
+      /// decoupled rows zeroed, their products with M, and the decoupled
+      /// rows with their diagonal entries.
       void
-      set_modes(const Epetra_CrsMatrix   &M,
-                Epetra_MultiVector       &x,
-                const Epetra_MultiVector &b);
+      set_modes(const Epetra_CrsMatrix &M);
 
       std::vector<long long>              indices;
       std::vector<Point<dim>>             points;
       std::unique_ptr<Epetra_MultiVector> modes, products, residual;
-      std::unique_ptr<Epetra_Vector>      diagonal;
+      std::vector<std::pair<int, double>> decoupled;
+      bool                                modes_current = false;
     };
   } // namespace Solver
 } // namespace psmpm
