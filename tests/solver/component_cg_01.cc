@@ -26,45 +26,26 @@
 //     in fewer iterations than (e); from a zero guess the step tolerance
 //     changes nothing (same iterations as (a)).
 #include <deal.II/base/function.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/numerics/matrix_tools.h>
 
 #include <psmpm/solver/component_cg.h>
 
 #include "../tests.h"
+#include "q1_mass.h"
 
 #include <Epetra_MultiVector.h>
 
 int
 main(int argc, char **argv)
 {
-  psmpm::MPISession                mpi(argc, argv);
-  std::ofstream                    out("output");
+  psmpm::MPISession mpi(argc, argv);
+  std::ofstream     out("output");
   return run_test([&out]() {
-    Triangulation<2> tria;
-    GridGenerator::subdivided_hyper_rectangle(tria,
-                                              {6, 5},
-                                              Point<2>(0, 0),
-                                              Point<2>(1.2, 1));
-    DoFHandler<2> dof_handler(tria);
-    dof_handler.distribute_dofs(FE_Q<2>(1));
-    const unsigned int     nv = dof_handler.n_dofs();
-    DynamicSparsityPattern scalar_dsp(nv);
-    DoFTools::make_sparsity_pattern(dof_handler, scalar_dsp);
-    SparsityPattern scalar_pattern;
-    scalar_pattern.copy_from(scalar_dsp);
-    SparseMatrix<double> Mq(scalar_pattern);
-    MatrixCreator::create_mass_matrix(dof_handler, QGauss<2>(2), Mq);
-    std::vector<Point<2>> support(nv);
-    DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dof_handler, support);
+    const Q1Mass       q1(Point<2>(0, 0), Point<2>(1.2, 1));
+    const auto        &Mq      = q1.matrix;
+    const unsigned int nv      = Mq.m();
+    const auto        &support = q1.support;
 
     const double           K[3][3] = {{2, 1, 0.5}, {1, 2, 1}, {0.5, 1, 2}};
     const unsigned int     n       = 3 * nv;

@@ -15,20 +15,13 @@
 // (c) no component free: nothing changes;
 // (d) every control point at one place (the rotation is a combination of
 //     the translations, the modes' matrix singular): nothing changes.
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/numerics/matrix_tools.h>
 
 #include <psmpm/solver/rigid_mode_correction.h>
 
 #include "../tests.h"
+#include "q1_mass.h"
 
 #include <Epetra_MultiVector.h>
 
@@ -77,22 +70,10 @@ main(int argc, char **argv)
   psmpm::MPISession mpi(argc, argv);
   std::ofstream     out("output");
   return run_test([&out]() {
-    Triangulation<2> tria;
-    GridGenerator::subdivided_hyper_rectangle(tria,
-                                              {6, 5},
-                                              Point<2>(0.3, -0.2),
-                                              Point<2>(1.5, 0.8));
-    DoFHandler<2> dof_handler(tria);
-    dof_handler.distribute_dofs(FE_Q<2>(1));
-    const unsigned int     nv = dof_handler.n_dofs(), n = nv + 1;
-    DynamicSparsityPattern scalar_dsp(nv);
-    DoFTools::make_sparsity_pattern(dof_handler, scalar_dsp);
-    SparsityPattern scalar_pattern;
-    scalar_pattern.copy_from(scalar_dsp);
-    SparseMatrix<double> Mq(scalar_pattern);
-    MatrixCreator::create_mass_matrix(dof_handler, QGauss<2>(2), Mq);
-    std::vector<Point<2>> points(nv);
-    DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dof_handler, points);
+    const Q1Mass          q1(Point<2>(0.3, -0.2), Point<2>(1.5, 0.8));
+    const auto           &Mq = q1.matrix;
+    const unsigned int    nv = Mq.m(), n = nv + 1;
+    std::vector<Point<2>> points = q1.support;
     points.emplace_back(2.0, 3.0); // the decoupled row's
 
     DynamicSparsityPattern dsp(n, n);
