@@ -520,10 +520,10 @@ namespace psmpm
       };
 
       /**
-       * The particles [@p first, @p last) move by dt v_p (or the grid
-       * velocity at the particle), their strain increments dt L_p, L_p =
-       * sum_i v_i (x) grad N_i(x_p), go to increments[p - first], and
-       * the velocity-gradient modes take their C_p from L_p.
+       * The particles [@p first, @p last) move by dt times the grid
+       * velocity at the particle (or v_p), their strain increments dt L_p, L_p
+       * = sum_i v_i (x) grad N_i(x_p), go to increments[p - first], and the
+       * velocity-gradient modes take their C_p from L_p.
        */
       template <int dim>
       void
@@ -551,15 +551,21 @@ namespace psmpm
                   if (!state.gradients_per_cell)
                     prefetch_lines<sizeof(Tensor<1, dim>) * 9>(
                       &state.shape_gradients[ahead * n]);
+                  if (options.with_grid_velocity)
+                    prefetch_lines<sizeof(double) * 9>(
+                      &state.shape_values[ahead * n]);
                 }
               const unsigned int    cell = particles.cell[p];
               const unsigned int    base = cell * n;
               const Tensor<1, dim> *grad = state.gradients(p, cell);
+              const double         *phi  = &state.shape_values[p * n];
               Tensor<2, dim>        L; // L_ij = dv_i/dx_j
+              Tensor<1, dim>        grid_velocity;
               if constexpr (dim == 2)
                 {
-                  // Rows in pairs: L_i += v_i grad N, as outer_product().
-                  Pair L0 = {0., 0.}, L1 = {0., 0.};
+                  // Rows in pairs: L_i += v_i grad N, as outer_product(),
+                  // and v += N v_i in the same pass over the grid values.
+                  Pair L0 = {0., 0.}, L1 = {0., 0.}, v = {0., 0.};
                   for (unsigned int k = 0; k < n; ++k)
                     {
                       const Tensor<1, 2> &vi =
@@ -567,23 +573,24 @@ namespace psmpm
                       const Pair g = load_pair(grad[k]);
                       L0 += broadcast(vi[0]) * g;
                       L1 += broadcast(vi[1]) * g;
+                      if (options.with_grid_velocity)
+                        v += broadcast(phi[k]) * load_pair(vi);
                     }
                   store_pair(L[0], L0);
                   store_pair(L[1], L1);
+                  store_pair(grid_velocity, v);
                 }
               else
                 for (unsigned int k = 0; k < n; ++k)
-                  L += outer_product(state.grid_velocity[grid.dofs[base + k]],
-                                     grad[k]);
-              Tensor<1, dim> velocity = particles.velocity[p];
-              if (options.with_grid_velocity)
-                {
-                  const double *phi = &state.shape_values[p * n];
-                  velocity          = Tensor<1, dim>();
-                  for (unsigned int k = 0; k < n; ++k)
-                    velocity +=
-                      phi[k] * state.grid_velocity[grid.dofs[base + k]];
-                }
+                  {
+                    const Tensor<1, dim> &vi =
+                      state.grid_velocity[grid.dofs[base + k]];
+                    L += outer_product(vi, grad[k]);
+                    grid_velocity += phi[k] * vi;
+                  }
+              const Tensor<1, dim> velocity = options.with_grid_velocity ?
+                                                grid_velocity :
+                                                particles.velocity[p];
               if (options.gradient)
                 particles.affine[p] = L;
               else if (options.rotation)

@@ -65,8 +65,12 @@ namespace psmpm
        *
        * Stress and positions (MUSL's second projection, for the same
        * reason as MUSL): the particles' new affine fields are projected
-       * again, and the gradient of that field drives the material update;
-       * positions move with v_p.
+       * again; the gradient of that field drives the material update and
+       * the field itself moves the particles, so that a particle's
+       * deformation gradient and its motion come from one velocity field.
+       * Moving them with v_p instead (an option) lets material move where
+       * the strain does not see it: an elastic column that should rock
+       * on its floor flows out (doc/transfers.md).
        */
       template <int dim>
       class APIC : public TransferScheme<dim>
@@ -120,11 +124,13 @@ namespace psmpm
             "trip per step.");
           prm.declare_entry(
             "Position update",
-            "particle velocity",
+            "grid velocity",
             Patterns::Selection("particle velocity|grid velocity"),
-            "What the apic scheme moves the particles with: their new "
-            "velocity v_p, or the re-projected grid velocity at the "
-            "particle (the field of the stress update, as musl does).");
+            "What the apic scheme moves the particles with: the "
+            "re-projected grid velocity at the particle (the field whose "
+            "gradient updates the stress, as musl does), or their new "
+            "velocity v_p (APIC as published; motion the re-projected "
+            "field does not carry then deforms no particle).");
         }
 
         bool
