@@ -21,7 +21,10 @@ namespace psmpm
       /// the particle's cell's functions @p dofs): C_yx D_xx + (C_yy -
       /// C_xx) D_xy - C_xy D_yy with D = sum_k phi_k d_k d_k^T, three
       /// independent sums instead of one chain of additions.
-      double
+      /// Particle's affine angular momentum and kinetic energy (per unit
+      /// mass): with D = sum_k N_k (X_k - x)(X_k - x)^T, C_yx D_xx +
+      /// (C_yy - C_xx) D_xy - C_xy D_yy and 1/2 C : (C D).
+      std::pair<double, double>
       affine_angular_momentum(const double                *phi,
                               const unsigned int          *dofs,
                               const unsigned int           n,
@@ -37,7 +40,12 @@ namespace psmpm
             Dxy += phi[k] * d[0] * d[1];
             Dyy += phi[k] * d[1] * d[1];
           }
-        return C[1][0] * Dxx + (C[1][1] - C[0][0]) * Dxy - C[0][1] * Dyy;
+        const double energy = 0.5 * (C[0][0] * (C[0][0] * Dxx + C[0][1] * Dxy) +
+                                     C[0][1] * (C[0][0] * Dxy + C[0][1] * Dyy) +
+                                     C[1][0] * (C[1][0] * Dxx + C[1][1] * Dxy) +
+                                     C[1][1] * (C[1][0] * Dxy + C[1][1] * Dyy));
+        return {C[1][0] * Dxx + (C[1][1] - C[0][0]) * Dxy - C[0][1] * Dyy,
+                energy};
       }
     } // namespace
 
@@ -152,13 +160,15 @@ namespace psmpm
               if (affine && (C[0][0] != 0 || C[0][1] != 0 || C[1][0] != 0 ||
                              C[1][1] != 0))
                 {
-                  local.h +=
-                    m * affine_angular_momentum(&state.shape_values[p * n],
-                                                &dofs[particles.cell[p] * n],
-                                                n,
-                                                control_points,
-                                                x,
-                                                C);
+                  const auto [h, energy] =
+                    affine_angular_momentum(&state.shape_values[p * n],
+                                            &dofs[particles.cell[p] * n],
+                                            n,
+                                            control_points,
+                                            x,
+                                            C);
+                  local.h += m * h;
+                  local.affine_kinetic += m * energy;
                 }
               local.mass += m;
               local.first += m * x;
@@ -190,18 +200,19 @@ namespace psmpm
         }
       else
         {
-          double sums[9] = {local.h,
-                            local.across,
-                            local.along,
-                            local.s,
-                            local.mass,
-                            local.first[0],
-                            local.first[1],
-                            local.first_r0[0],
-                            local.first_r0[1]};
-          Utilities::MPI::sum(ArrayView<const double>(sums, 9),
+          double sums[10] = {local.h,
+                             local.across,
+                             local.along,
+                             local.s,
+                             local.mass,
+                             local.first[0],
+                             local.first[1],
+                             local.first_r0[0],
+                             local.first_r0[1],
+                             local.affine_kinetic};
+          Utilities::MPI::sum(ArrayView<const double>(sums, 10),
                               comm,
-                              ArrayView<double>(sums, 9));
+                              ArrayView<double>(sums, 10));
           // Times the inverse, as Tensor / double computes it.
           const double       inverse_mass = 1. / sums[4];
           const Tensor<1, 2> shift({sums[5] * inverse_mass - centre[0],
@@ -210,8 +221,9 @@ namespace psmpm
           sums[1] -= cross(sum_r0, shift);
           sums[2] -= sum_r0 * shift;
           Values v;
-          v.angular_momentum = sums[0];
-          v.rotation_angle   = std::atan2(sums[1], sums[2]);
+          v.angular_momentum      = sums[0];
+          v.rotation_angle        = std::atan2(sums[1], sums[2]);
+          v.affine_kinetic_energy = sums[9];
           if (!initialized)
             {
               initial     = v;
@@ -226,7 +238,8 @@ namespace psmpm
     template <int dim>
     void
     RotationStatistics<dim>::add_columns(const Values    &values,
-                                         StatisticsTable &statistics)
+                                         StatisticsTable &statistics,
+                                         const bool       affine_part)
     {
       if (dim == 1)
         return;
@@ -236,6 +249,12 @@ namespace psmpm
       statistics.set_precision("angular_momentum", 8);
       statistics.set_scientific("rotation_angle", true);
       statistics.set_precision("rotation_angle", 8);
+      if (!affine_part)
+        return;
+      statistics.add_value("affine_kinetic_energy",
+                           values.affine_kinetic_energy);
+      statistics.set_scientific("affine_kinetic_energy", true);
+      statistics.set_precision("affine_kinetic_energy", 8);
     }
 
     template <int dim>

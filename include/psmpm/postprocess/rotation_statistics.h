@@ -6,9 +6,9 @@
 
 #include <deal.II/base/point.h>
 
+#include <psmpm/base/summary.h>
 #include <psmpm/postprocess/state_view.h>
 #include <psmpm/postprocess/statistics_table.h>
-#include <psmpm/base/summary.h>
 
 #include <vector>
 
@@ -33,7 +33,14 @@ namespace psmpm
      *   X_p - c0 and r = x_p - c(t), the mass-weighted best rotation of
      *   the body since the start (exact for a rigid rotation).
      *
-     * Columns angular_momentum and rotation_angle; summary.json gets the
+     * - with affine transfers, the kinetic energy of the particles'
+     *   affine parts, sum_p 1/2 m_p C_p : (C_p D_p), D_p = sum_i N_i(x_p)
+     *   (X_i - x_p)(X_i - x_p)^T: what the affine fields carry beside
+     *   1/2 m_p |v_p|^2 (for the control-point fit, the grid's lumped
+     *   kinetic energy bounds the two together).
+     *
+     * Columns angular_momentum and rotation_angle (and
+     * affine_kinetic_energy with affine transfers); summary.json gets the
      * initial and final angular momentum, its relative change and the
      * final angle.
      */
@@ -43,8 +50,9 @@ namespace psmpm
     public:
       struct Values
       {
-        double angular_momentum = 0;
-        double rotation_angle   = 0;
+        double angular_momentum      = 0;
+        double rotation_angle        = 0;
+        double affine_kinetic_energy = 0;
       };
 
       /// The values of @p state; @p affine_part: whether the particles'
@@ -56,7 +64,8 @@ namespace psmpm
       /// This rank's sums, before the reduction.
       struct Sums
       {
-        double         h = 0, across = 0, along = 0, s = 0, mass = 0;
+        double h = 0, across = 0, along = 0, s = 0, mass = 0,
+               affine_kinetic = 0;
         Tensor<1, dim> first, first_r0;
       };
 
@@ -83,8 +92,12 @@ namespace psmpm
         return initialized && have_control_points;
       }
 
+      /// The columns of @p values; affine_kinetic_energy if
+      /// @p affine_part (the transfer carries affine matrices).
       void
-      add_columns(const Values &values, StatisticsTable &statistics);
+      add_columns(const Values    &values,
+                  StatisticsTable &statistics,
+                  const bool       affine_part);
 
       void
       fill_summary(Summary &summary) const;

@@ -16,7 +16,8 @@ namespace psmpm
     {
       /**
        * Columns kinetic_energy ... momentum_y (EnergyStatistics) and, in
-       * 2D, angular_momentum and rotation_angle (RotationStatistics), with
+       * 2D, angular_momentum and rotation_angle (with affine transfers also
+       * affine_kinetic_energy; RotationStatistics), with
        * the rotation's entries of summary.json and its history in
        * checkpoints; the energies go to the stability monitor. One
        * postprocessor for both: their particle sums are collected on the
@@ -54,7 +55,7 @@ namespace psmpm
         {
           const auto [e, values] = sums.compute(state, state.carries_affine);
           EnergyStatistics<dim>::add_columns(e, statistics);
-          rotation.add_columns(values, statistics);
+          rotation.add_columns(values, statistics, state.carries_affine);
           for (const char *c : {"kinetic_energy",
                                 "strain_energy",
                                 "gravity_energy",
@@ -67,7 +68,13 @@ namespace psmpm
                 statistics.set_scientific(c, true);
                 statistics.set_precision(c, 8);
               }
-          balance.total    = e.total();
+          // The affine fields' kinetic energy is the particles' too: an
+          // affine matrix that grows (a FLIP update of C_p feeds it its
+          // own noise) is an instability the particle velocities alone
+          // do not show.
+          balance.total =
+            e.total() +
+            (state.carries_affine ? values.affine_kinetic_energy : 0.);
           balance.scale    = e.scale();
           balance.momentum = e.momentum.norm();
           if (!have_initial_momentum)
