@@ -2,8 +2,7 @@
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
 // The kinetic energy of apic's affine fields (statistics column
-// affine_kinetic_energy, sum_p 1/2 m_p C_p : (C_p D_p)) and the stability
-// monitor, which counts it with the total energy:
+// affine_kinetic_energy, sum_p 1/2 m_p C_p : (C_p D_p)):
 // (a) apic (Powell-Sabin, lumped mass) on the free rotating block of
 //     prm/rotating_block.prm for a quarter turn: the column is there and
 //     positive (the particles spin), and total + affine energy never rises
@@ -13,11 +12,11 @@
 //     energy, 0.2 % here);
 // (b) musl carries no affine field: no such column;
 // (c) affine FLIP (FLIP fraction 1 for v_p and C_p) on the soft column of
-//     prm/column_collapse.prm: C_p keeps and feeds back its own noise, its
-//     energy grows, and the run stops as unstable (energy growth) while
-//     the statistics' total_energy alone (without the affine part) has
-//     not risen by the monitor's tolerance: the affine part is what
-//     caught it.
+//     prm/column_collapse.prm: C_p keeps and feeds back its own noise and
+//     its energy grows beyond a tenth of the largest kinetic + strain
+//     energy, while the statistics' total_energy (without the affine
+//     part, what the stability monitor watches) does not rise by that
+//     much: the column shows what the total hides.
 #include "../mpm_tests.h"
 
 #include <algorithm>
@@ -101,7 +100,7 @@ main(int argc, char **argv)
                        "Transfer/FLIP fraction=1",
                        "Transfer/FLIP affine matrix=true",
                        "Output/Interval=0"});
-    PSMPM_CHECK(out, r.status == Simulator::Status::unstable);
+    PSMPM_CHECK(out, r.status == Simulator::Status::completed);
     // The monitor's scale: the largest kinetic + strain + |gravity|
     // energy seen; here kinetic + strain bound it from below.
     const auto &total   = r.columns.at("total_energy");
@@ -115,6 +114,7 @@ main(int argc, char **argv)
       }
     PSMPM_CHECK(out, rise < 0.1 * scale);
     const auto &affine = r.columns.at("affine_kinetic_energy");
-    PSMPM_CHECK(out, affine.back() > 0.1 * scale);
+    PSMPM_CHECK(out,
+                *std::max_element(affine.begin(), affine.end()) > 0.1 * scale);
   }
 }
