@@ -5,7 +5,8 @@ Every case runs build/psmpm as a subprocess with a time limit, in a
 directory of its own, on one of the scenes in prm/ cut to one time step
 (Time/End time = 1e-9; the mass matrix study to one degree and one mesh).
 The cases substitute hostile values for every entry of every scene (by
---set and inside a copy of the scene file), mangle --set syntax and the
+--set and inside a copy of the scene file; a list of numbers also moved
+1e6 away, off every mesh), mangle --set syntax and the
 command line, the parameter file (includes, structure, special files),
 the JSON form of the scene (structure and types, null), Gmsh files
 (truncation, duplicate or missing node ids, MeshFormat versions, element
@@ -257,6 +258,26 @@ def copy_scene_dir(case_dir, text, name="case.prm"):
         f.write(text)
 
 
+def far_away(values):
+    """For an entry that some scene sets to a list of at least two
+    numbers (coordinates, a box, a vector): the first such list with
+    1e6 added to every number. Well-formed, but far from every mesh: a
+    region, body, point or segment that misses the domain must be
+    refused or run to a finite result, not run on nothing."""
+    for value in values:
+        parts = re.split(rb"([,;])", value)
+        numbers = parts[0::2]
+        if len(numbers) < 2:
+            continue
+        try:
+            shifted = [b"%.17g" % (float(n) + 1e6) for n in numbers]
+        except ValueError:
+            continue
+        parts[0::2] = shifted
+        return [("far away", b"".join(parts))]
+    return []
+
+
 def value_cases(scenes, every_scene=False):
     """Hostile values for every entry path of the scenes: each value by
     --set and each kind of value inside a copy of the scene file, on the
@@ -268,7 +289,8 @@ def value_cases(scenes, every_scene=False):
             scenes_of.setdefault(path, []).append((scene, index))
     cases = []
     for path, where in scenes_of.items():
-        pool = CONSTANTS if is_constants(path) else VALUES
+        pool = CONSTANTS if is_constants(path) else VALUES + far_away(
+            [scene.values[path] for scene, _ in where])
         entry = path.split("/")[-1].encode()
         kinds_in_file = set()
         for k, (kind, value0) in enumerate(pool):

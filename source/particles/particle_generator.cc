@@ -484,9 +484,27 @@ namespace psmpm
         placement{*this, mesh, tria, locator, is_owned, par, particles};
       if (bodies.empty())
         {
-          placement.place({density}, [this](const Point<dim> &p) {
-            return in_region(p) ? 0 : -1;
+          // Counted over every candidate point, owned or not (as for the
+          // bodies): a region that misses the mesh would otherwise run
+          // without particles and fail on the statistics' NaN.
+          std::uint64_t count = 0;
+          placement.place({density}, [this, &count](const Point<dim> &p) {
+            if (!in_region(p))
+              return -1;
+            ++count;
+            return 0;
           });
+          if (par != nullptr &&
+              mesh.type == Mesh::MeshGenerator<dim>::Type::gmsh)
+            count = Utilities::MPI::sum(count, par->get_communicator());
+          std::string text;
+          for (const double r : region)
+            text += (text.empty() ? "" : ", ") + prm_value(r);
+          AssertThrow(count > 0,
+                      ExcMessage("Particles/Region = '" + text +
+                                 "' holds no particle: it lies outside the "
+                                 "mesh or between the particle positions "
+                                 "of Particles/Per block."));
           return;
         }
       if constexpr (dim == 2)

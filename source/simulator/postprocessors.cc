@@ -51,6 +51,15 @@ namespace psmpm
 
     template <int dim>
     void
+    Postprocessors<dim>::check_mesh(const Mesh::CellLocator<dim> &locator,
+                                    MPI_Comm                      comm) const
+    {
+      for (const auto &p : list)
+        p->check_mesh(locator, comm);
+    }
+
+    template <int dim>
+    void
     Postprocessors<dim>::initialize(const Postprocess::StateView<dim> &view)
     {
       reference = view.reference;

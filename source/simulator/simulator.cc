@@ -313,6 +313,7 @@ namespace psmpm
       transfers.scheme->initialize(state);
       if (state.reconstruction)
         state.reconstruction->initialize(state);
+      postprocessors.check_mesh(state.locator, comm);
     }
 
     template <int dim>

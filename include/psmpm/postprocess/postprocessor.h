@@ -84,6 +84,14 @@ namespace psmpm
         return 1000;
       }
 
+      /// After setup, before anything is written: throw ExcMessage
+      /// naming the entry for input the mesh contradicts (a point off
+      /// the mesh), which ends the run as bad input. Collective.
+      virtual void
+      check_mesh(const Mesh::CellLocator<dim> &, MPI_Comm) const
+      {
+      }
+
       /// After setup, once the output directory is known; on a fresh run
       /// and on a resumed one (there before load()).
       virtual void

@@ -41,6 +41,8 @@ namespace psmpm
 
       /// The hooks of Postprocess::Postprocessor, in order.
       void
+      check_mesh(const Mesh::CellLocator<dim> &locator, MPI_Comm comm) const;
+      void
       initialize(const Postprocess::StateView<dim> &view);
       void
       start(const Postprocess::StateView<dim> &view);

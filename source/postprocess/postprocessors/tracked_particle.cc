@@ -1,8 +1,10 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <psmpm/mesh/cell_locator.h>
 #include <psmpm/postprocess/postprocessor.h>
 #include <psmpm/postprocess/tracked_particle.h>
 
@@ -42,7 +44,7 @@ namespace psmpm
         parse_parameters(ParameterHandler &prm) override
         {
           prm.enter_subsection("Output");
-          const std::string text = prm.get("Tracked point");
+          text = prm.get("Tracked point");
           prm.leave_subsection();
           // The pattern takes numbers string_to_double refuses
           // (subnormals such as 4.9e-324).
@@ -62,6 +64,22 @@ namespace psmpm
                                  std::to_string(dim) + " coordinate(s)."));
         }
 
+        /// "Nearest particle" would quietly track a boundary particle
+        /// for a point off the mesh (a typo): refused. A distributed mesh
+        /// locates the point on the rank that holds it.
+        void
+        check_mesh(const Mesh::CellLocator<dim> &locator,
+                   MPI_Comm                      comm) const override
+        {
+          if (point.empty())
+            return;
+          const int inside =
+            locator.locate(tracked_point()) != Mesh::CellLocator<dim>::invalid;
+          AssertThrow(Utilities::MPI::max(inside, comm) == 1,
+                      ExcMessage("Output/Tracked point = '" + text +
+                                 "' lies outside the mesh."));
+        }
+
         unsigned int
         order() const override
         {
@@ -74,10 +92,8 @@ namespace psmpm
           tracked.reset();
           if (!state.reference || point.empty())
             return;
-          Point<dim> X;
-          for (unsigned int d = 0; d < dim; ++d)
-            X[d] = point[d];
-          tracked = std::make_unique<TrackedParticle<dim>>(X, *state.reference);
+          tracked = std::make_unique<TrackedParticle<dim>>(tracked_point(),
+                                                           *state.reference);
         }
 
         void
@@ -123,6 +139,16 @@ namespace psmpm
         }
 
       private:
+        Point<dim>
+        tracked_point() const
+        {
+          Point<dim> X;
+          for (unsigned int d = 0; d < dim; ++d)
+            X[d] = point[d];
+          return X;
+        }
+
+        std::string                           text;
         std::vector<double>                   point;
         std::unique_ptr<TrackedParticle<dim>> tracked;
       };
