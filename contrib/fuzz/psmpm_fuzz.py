@@ -6,7 +6,7 @@ directory of its own, on one of the scenes in prm/ cut to one time step
 (Time/End time = 1e-9; the mass matrix study to one degree and one mesh).
 The cases substitute hostile values for every entry of every scene (by
 --set and inside a copy of the scene file; a list of numbers also moved
-1e6 away, off every mesh), mangle --set syntax and the
+1e6 away, made degenerate, reversed and shrunk), mangle --set syntax and the
 command line, the parameter file (includes, structure, special files),
 the JSON form of the scene (structure and types, null), Gmsh files
 (truncation, duplicate or missing node ids, MeshFormat versions, element
@@ -258,23 +258,39 @@ def copy_scene_dir(case_dir, text, name="case.prm"):
         f.write(text)
 
 
-def far_away(values):
+# Well-formed lists of numbers that describe a geometry the mesh
+# contradicts: (kind, function of the list's numbers).
+LIST_MUTATIONS = [
+    ("far away", lambda x: [v + 1e6 for v in x]),
+    ("degenerate list", lambda x: [x[0]] * len(x)),
+    ("reversed list", lambda x: x[::-1]),
+    ("shrunk list", lambda x: [v * 1e-9 for v in x]),
+]
+
+
+def list_values(values):
     """For an entry that some scene sets to a list of at least two
-    numbers (coordinates, a box, a vector): the first such list with
-    1e6 added to every number. Well-formed, but far from every mesh: a
-    region, body, point or segment that misses the domain must be
-    refused or run to a finite result, not run on nothing."""
+    numbers (coordinates, a box, a vector): the first such list moved
+    1e6 away (off every mesh), with every number equal to the first
+    (a box or polygon of no area), reversed (corners swapped) and scaled
+    by 1e-9 (smaller than the particle spacing). Well formed, so only
+    the geometry can refuse them: a region, body, point or segment that
+    misses the domain or holds nothing must be refused or run to a
+    finite result, not run on nothing."""
     for value in values:
         parts = re.split(rb"([,;])", value)
         numbers = parts[0::2]
         if len(numbers) < 2:
             continue
         try:
-            shifted = [b"%.17g" % (float(n) + 1e6) for n in numbers]
+            x = [float(n) for n in numbers]
         except ValueError:
             continue
-        parts[0::2] = shifted
-        return [("far away", b"".join(parts))]
+        cases = []
+        for kind, mutate in LIST_MUTATIONS:
+            parts[0::2] = [b"%.17g" % v for v in mutate(x)]
+            cases.append((kind, b"".join(parts)))
+        return cases
     return []
 
 
@@ -289,7 +305,7 @@ def value_cases(scenes, every_scene=False):
             scenes_of.setdefault(path, []).append((scene, index))
     cases = []
     for path, where in scenes_of.items():
-        pool = CONSTANTS if is_constants(path) else VALUES + far_away(
+        pool = CONSTANTS if is_constants(path) else VALUES + list_values(
             [scene.values[path] for scene, _ in where])
         entry = path.split("/")[-1].encode()
         kinds_in_file = set()

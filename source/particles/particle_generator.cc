@@ -271,17 +271,19 @@ namespace psmpm
         std::vector<std::uint64_t> count(bodies.bodies.size() + 1, 0);
         std::string                overlap;
         placement.place(densities, [&](const Point<2> &p) {
-          int found = -1;
+          int         found = -1;
+          const Body *first = nullptr;
           for (const Body &body : bodies.bodies)
             if (body.shape.inside(p))
               {
                 if (found < 0)
-                  found = body.number;
+                  found = body.number, first = &body;
                 else if (overlap.empty())
-                  overlap = body.name() + " overlaps Bodies/Body " +
-                            std::to_string(found) +
-                            ": both contain the particle position " + where(p) +
-                            ".";
+                  overlap = body.name() + " (" + body.shape.description() +
+                            ") overlaps " + first->name() + " (" +
+                            first->shape.description() +
+                            "): both contain the particle position " +
+                            where(p) + ".";
               }
           if (found > 0)
             ++count[found];

@@ -58,7 +58,8 @@ main(int argc, char **argv)
      {"Bodies/Body 2", "Radius = 0.005", "holds no particle"}},
     {"overlap",
      "  set Shape = disk\n  set Center = 0.45, 0.45\n  set Radius = 0.2\n",
-     {"Bodies/Body 2 overlaps Bodies/Body 1"}},
+     {"Bodies/Body 2 (Shape = disk, Center = 0.45, 0.45, Radius = 0.2) "
+      "overlaps Bodies/Body 1 (Shape = "}},
     {"two vertices",
      "  set Shape = polygon\n  set Vertices = 0.6, 0.6, 0.9, 0.9\n",
      {"Bodies/Body 2/Vertices", "0.6, 0.6, 0.9, 0.9", "at least 3"}},
