@@ -17,20 +17,19 @@ namespace psmpm
   {
     namespace
     {
-      /// sum_k phi_k d_k x C d_k, d_k = X_k - x (X the control points of
-      /// the particle's cell's functions @p dofs): C_yx D_xx + (C_yy -
-      /// C_xx) D_xy - C_xy D_yy with D = sum_k phi_k d_k d_k^T, three
-      /// independent sums instead of one chain of additions.
-      /// Particle's affine angular momentum and kinetic energy (per unit
-      /// mass): with D = sum_k N_k (X_k - x)(X_k - x)^T, C_yx D_xx +
-      /// (C_yy - C_xx) D_xy - C_xy D_yy and 1/2 C : (C D).
+      /// A particle's affine angular momentum sum_k phi_k d_k x C d_k
+      /// and kinetic energy 1/2 C : (C D) per unit mass, d_k = X_k - x
+      /// (X the control points of the particle's cell's functions
+      /// @p dofs), D = sum_k phi_k d_k d_k^T: the momentum as C_yx D_xx
+      /// + (C_yy - C_xx) D_xy - C_xy D_yy, three independent sums instead
+      /// of one chain of additions.
       std::pair<double, double>
-      affine_angular_momentum(const double                *phi,
-                              const unsigned int          *dofs,
-                              const unsigned int           n,
-                              const std::vector<Point<2>> &X,
-                              const Point<2>              &x,
-                              const Tensor<2, 2>          &C)
+      affine_momentum_and_energy(const double                *phi,
+                                 const unsigned int          *dofs,
+                                 const unsigned int           n,
+                                 const std::vector<Point<2>> &X,
+                                 const Point<2>              &x,
+                                 const Tensor<2, 2>          &C)
       {
         double Dxx = 0, Dxy = 0, Dyy = 0;
         for (unsigned int k = 0; k < n; ++k)
@@ -161,12 +160,12 @@ namespace psmpm
                              C[1][1] != 0))
                 {
                   const auto [h, energy] =
-                    affine_angular_momentum(&state.shape_values[p * n],
-                                            &dofs[particles.cell[p] * n],
-                                            n,
-                                            control_points,
-                                            x,
-                                            C);
+                    affine_momentum_and_energy(&state.shape_values[p * n],
+                                               &dofs[particles.cell[p] * n],
+                                               n,
+                                               control_points,
+                                               x,
+                                               C);
                   local.h += m * h;
                   local.affine_kinetic += m * energy;
                 }
