@@ -23,9 +23,10 @@ namespace psmpm
                         const bool                           affine,
                         const std::string                   &expression,
                         const std::string                   &entry,
-                        const unsigned int                   body)
+                        const unsigned int                   body,
+                        const double                         step)
       {
-        FunctionParser<dim> velocity(dim, 0., 1e-4);
+        FunctionParser<dim> velocity(dim, 0., step);
         velocity.set_formula(AutoDerivativeFunction<dim>::FourthOrder);
         try
           {
@@ -104,9 +105,11 @@ namespace psmpm
     InitialConditions<dim>::set_velocities(
       Particles::ParticleSet<dim> &particles,
       const Particles::Bodies     &bodies,
-      const bool                   affine) const
+      const bool                   affine,
+      const double                 length) const
     {
-      const auto constants = parse_function_constants(velocity_constants);
+      const double step      = 1e-3 * length;
+      const auto   constants = parse_function_constants(velocity_constants);
       // The transfers that are not affine never update C_p, so it stays
       // zero for them (a stale C_p would enter the reported angular
       // momentum). Without Bodies one expression for all particles; with
@@ -117,14 +120,16 @@ namespace psmpm
                           affine,
                           velocity_expression,
                           "Initial conditions/Velocity",
-                          0);
+                          0,
+                          step);
       for (const auto &body : bodies.bodies)
         set_body_velocity(particles,
                           constants,
                           affine,
                           body.velocity,
                           body.name() + "/Initial velocity",
-                          body.number);
+                          body.number,
+                          step);
     }
 
     template <int dim>

@@ -451,9 +451,11 @@ namespace psmpm
         comm);
       // The affine transfers start from the initial velocity gradient
       // (C_p = grad v); the transfer is final here (setup_space_and_grid).
-      initial_conditions.set_velocities(particles,
-                                        particle_generator.bodies,
-                                        transfers.scheme->carries_affine());
+      initial_conditions.set_velocities(
+        particles,
+        particle_generator.bodies,
+        transfers.scheme->carries_affine(),
+        state.locator.minimum_height()); // the same on every rank
       particles.sort_by_cell(state.triangulation->n_active_cells());
       set_particle_capacity(particles, comm);
     }

@@ -46,15 +46,19 @@ namespace psmpm
 
       /**
        * Set the velocity of every particle and, if @p affine (the
-       * affine transfers start from C_p = grad v), its affine matrix:
-       * fourth-order differences with h = 1e-4 are exact to round-off for
-       * the affine fields they must carry. Throws ExcMessage naming the
-       * entry if an expression does not parse.
+       * affine transfers start from C_p = grad v), its affine matrix by
+       * fourth-order differences with a step of 1e-3 @p length (the
+       * mesh's smallest triangle height, the same on every rank): exact
+       * to round-off for affine fields, and relative to the mesh so that
+       * a scene in micrometres or in kilometres gets the same gradient
+       * (a fixed step is wider than a body of micrometres). Throws
+       * ExcMessage naming the entry if an expression does not parse.
        */
       void
       set_velocities(Particles::ParticleSet<dim> &particles,
                      const Particles::Bodies     &bodies,
-                     const bool                   affine) const;
+                     const bool                   affine,
+                     const double                 length) const;
 
       /**
        * The entry and value that give the initial velocity of the
