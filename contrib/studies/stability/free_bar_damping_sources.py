@@ -11,8 +11,8 @@ fraction of the vibration's energy lost over the run,
 
     (E_0 - E_end) / (E_0 - 1/2 M U^2),
 
-E = total_energy + affine_kinetic_energy (the stability monitor's energy
-plus the affine fields' part), U the rigid translation the case adds, M
+E = total_energy + affine_kinetic_energy (free_body_transfers.energy():
+the stability monitor's energy plus the affine fields' part), U the rigid translation the case adds, M
 the bar's mass. A translation is carried exactly by every transfer, so
 what is lost is the vibration's.
 
@@ -21,13 +21,11 @@ what is lost is the vibration's.
 """
 import argparse
 import os
-import subprocess
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "lib"))
-from psmpm_output import ROOT, read_statistics, read_summary  # noqa: E402
+# The runs and energies of the free-body table (the script's own directory
+# is on the path).
+from free_body_transfers import ROOT, energy, run
 
 MODE = "v0*cos(pi*(x-3)/L)"
 MASS = 25 * 2 * 1.0  # length x height x density of the bar's particles
@@ -68,20 +66,10 @@ TRANSFERS = [
 
 
 def lost_fraction(psmpm, out, settings, U):
-    command = [psmpm, os.path.join(ROOT, "prm", "free_vibrating_bar.prm"),
-               "--set", "Output directory=" + out,
-               "--set", "Output/Interval=0"]
-    for s in settings:
-        command += ["--set", s]
-    subprocess.run(command, stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL)
-    summary = read_summary(out)
-    if summary is None:
-        return "no summary"
-    if summary["status"] != "completed":
-        return summary["status"]
-    s = read_statistics(os.path.join(out, "statistics.txt"))
-    e = s["total_energy"] + s.get("affine_kinetic_energy", 0.)
+    summary, s, status, _ = run(psmpm, "free_vibrating_bar.prm", out, settings)
+    if summary is None or summary["status"] != "completed":
+        return status
+    e = energy(s)
     vibration = e[0] - 0.5 * MASS * U * U
     return "%.4f" % ((e[0] - e[-1]) / vibration)
 

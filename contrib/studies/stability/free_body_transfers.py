@@ -7,8 +7,8 @@ numerical damping"):
 
 * prm/free_vibrating_bar.prm (Powell-Sabin, free-free bar in its first
   axial mode, three periods): total energy (with the affine fields'
-  kinetic energy where the transfer carries them, as the stability
-  monitor counts it) at the end over the start, and
+  kinetic energy where the transfer carries them, which the stability
+  monitor leaves out) at the end over the start, and
   the period from the kinetic energy's minima (at T/4, 3T/4, ...) over
   2 L / c;
 * prm/rotating_block.prm (free block, quarter turn): angular momentum
@@ -105,7 +105,8 @@ def kinetic_minima(t, kinetic):
 
 def energy(s):
     """Total energy of every row, with the affine fields' kinetic energy
-    where the transfer carries them (the stability monitor's energy)."""
+    where the transfer carries them (the stability monitor watches
+    total_energy alone)."""
     return s["total_energy"] + s.get("affine_kinetic_energy", 0.)
 
 
