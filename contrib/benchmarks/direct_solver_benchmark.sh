@@ -35,4 +35,6 @@ for bx in 16 32 64; do
 done
 row "two_disks (P1 ghost penalty), to t = 0.5" prm/two_disks.prm --set "Time/End time=0.5"
 row "column_collapse (P1 ghost penalty, floor beyond the column)" prm/column_collapse.prm
+row "free_vibrating_bar (P1 ghost penalty, 31 x 4 blocks, free)" prm/free_vibrating_bar.prm \
+  --set "Basis/Type=linear"
 row "vibrating_bar_small_ps (PS consistent, 2,000 steps)" prm/vibrating_bar_small_ps.prm

@@ -1,6 +1,9 @@
 // ---------------------------------------------------------------------
 // psmpm: Material Point Method with Powell-Sabin splines on triangles.
 // ---------------------------------------------------------------------
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
 #include <psmpm/solver/dense_cholesky.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -11,6 +14,53 @@ namespace psmpm
 {
   namespace Solver
   {
+    void
+    DenseCholesky::order(const int *offsets, const int *columns)
+    {
+      // deal.II's Cuthill-McKee on the stored pattern (every entry, zero
+      // or not: the pattern is the grid system's, fixed between
+      // reinitializations), and its reverse; the numbering with the
+      // smallest envelope is kept. DoF numberings follow the cells, so
+      // on a long mesh a row reaches across a whole layer of cells, and
+      // the envelope and the work (n b^2 / 2) grow with the mesh's length
+      // instead of its width.
+      DynamicSparsityPattern pattern(n, n);
+      for (unsigned int r = 0; r < n; ++r)
+        for (int k = offsets[r]; k < offsets[r + 1]; ++k)
+          pattern.add(row_gid[r], column_gid[columns[k]]);
+      std::vector<DynamicSparsityPattern::size_type> cm(n);
+      SparsityTools::reorder_Cuthill_McKee(pattern, cm);
+      const auto envelope = [&](const auto &number) {
+        std::size_t sum = 0;
+        for (unsigned int r = 0; r < n; ++r)
+          {
+            const unsigned int i  = number(row_gid[r]);
+            unsigned int       lo = i;
+            for (int k = offsets[r]; k < offsets[r + 1]; ++k)
+              lo = std::min<unsigned int>(lo, number(column_gid[columns[k]]));
+            sum += i - lo;
+          }
+        return sum;
+      };
+      const auto identity = [](const unsigned int i) { return i; };
+      const auto forward  = [&](const unsigned int i) {
+        return static_cast<unsigned int>(cm[i]);
+      };
+      const auto reverse = [&](const unsigned int i) {
+        return static_cast<unsigned int>(n - 1 - cm[i]);
+      };
+      const std::size_t e[3] = {envelope(identity),
+                                envelope(forward),
+                                envelope(reverse)};
+      permutation.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        permutation[i] = e[2] <= e[1] && e[2] < e[0] ? reverse(i) :
+                         e[1] < e[0]                 ? forward(i) :
+                                                       i;
+      ordered_rows     = n;
+      ordered_nonzeros = offsets[n];
+    }
+
     bool
     DenseCholesky::factorize(const TrilinosWrappers::SparseMatrix &A)
     {
@@ -33,12 +83,18 @@ namespace psmpm
       column_gid.resize(crs.NumMyCols());
       for (int c = 0; c < crs.NumMyCols(); ++c)
         column_gid[c] = crs.GCID(c);
+      // Any numbering factors correctly; a stale one (another pattern of
+      // the same size) would only cost time.
+      if (ordered_rows != n || ordered_nonzeros != offsets[n])
+        order(offsets, columns);
+      // A = P^T L L^T P: row and column i of A are row and column
+      // permutation[i] of the factored matrix.
       for (unsigned int r = 0; r < n; ++r)
         {
-          const unsigned int i = row_gid[r];
+          const unsigned int i = permutation[row_gid[r]];
           for (int k = offsets[r]; k < offsets[r + 1]; ++k)
             {
-              const unsigned int j = column_gid[columns[k]];
+              const unsigned int j = permutation[column_gid[columns[k]]];
               if (j <= i && entries[k] != 0)
                 first[i] = std::min(first[i], j);
             }
@@ -50,10 +106,10 @@ namespace psmpm
                   0.);
       for (unsigned int r = 0; r < n; ++r)
         {
-          const unsigned int i = row_gid[r];
+          const unsigned int i = permutation[row_gid[r]];
           for (int k = offsets[r]; k < offsets[r + 1]; ++k)
             {
-              const unsigned int j = column_gid[columns[k]];
+              const unsigned int j = permutation[column_gid[columns[k]]];
               if (j <= i && entries[k] != 0)
                 L[std::size_t(i) * n + j] = entries[k];
             }
@@ -79,7 +135,14 @@ namespace psmpm
       return true;
     }
 
-
+    std::size_t
+    DenseCholesky::envelope() const
+    {
+      std::size_t sum = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        sum += i - first[i];
+      return sum;
+    }
 
     void
     DenseCholesky::solve(const TrilinosWrappers::MPI::Vector &b,
@@ -94,9 +157,11 @@ namespace psmpm
       AssertDimension(x.locally_owned_size(), n);
       const double *const bv = b.begin();
       for (unsigned int i = 0; i < n; ++i)
+        y[permutation[i]] = bv[i];
+      for (unsigned int i = 0; i < n; ++i)
         {
           const double *const Li = &L[std::size_t(i) * n];
-          double              s  = bv[i];
+          double              s  = y[i];
           for (unsigned int k = first[i]; k < i; ++k)
             s -= Li[k] * y[k];
           y[i] = s / Li[i];
@@ -108,7 +173,9 @@ namespace psmpm
           for (unsigned int k = first[i]; k < i; ++k)
             y[k] -= Li[k] * y[i];
         }
-      std::copy(y.begin(), y.begin() + n, x.begin());
+      double *const xv = x.begin();
+      for (unsigned int i = 0; i < n; ++i)
+        xv[i] = y[permutation[i]];
     }
   } // namespace Solver
 } // namespace psmpm

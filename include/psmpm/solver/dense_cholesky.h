@@ -27,7 +27,10 @@ namespace psmpm
      *
      * Row i of L is nonzero only from the first column of A's row i on
      * (Cholesky fills the envelope, never beyond), so the work is
-     * n b^2 / 2 for half-bandwidth b rather than n^3 / 6. Written out here
+     * n b^2 / 2 for half-bandwidth b rather than n^3 / 6. The rows are
+     * factored in the (reverse) Cuthill-McKee order of the matrix'
+     * pattern when that has the smaller envelope (computed once per
+     * pattern). Written out here
      * rather than through LAPACK: Debian's reference dpotrf on a 78 x 78
      * matrix took 7x the instructions of this loop, and its condition
      * estimate (dpocon) as many again (callgrind, doc/performance.md).
@@ -46,18 +49,34 @@ namespace psmpm
       bool
       factorize(const TrilinosWrappers::SparseMatrix &A);
 
+      /// The number of entries of the last factor below its diagonal
+      /// (the envelope: the work of a solve).
+      std::size_t
+      envelope() const;
+
       /// x = A^{-1} b with the last factor.
       void
       solve(const TrilinosWrappers::MPI::Vector &b,
             TrilinosWrappers::MPI::Vector       &x) const;
 
     private:
+      /// The numbering of the rows with the smallest envelope among the
+      /// given one and deal.II's Cuthill-McKee and its reverse, from the
+      /// CRS pattern (@p offsets, @p columns) of the matrix.
+      void
+      order(const int *offsets, const int *columns);
+
       unsigned int                n = 0;
       std::vector<double>         L;     ///< row-major n x n, lower part
       std::vector<unsigned int>   first; ///< first column of row i's envelope
       mutable std::vector<double> y;
       /// Global index of each local row and column of the matrix.
       std::vector<unsigned int> row_gid, column_gid;
+      /// Row i of the matrix is row permutation[i] of the factor; the
+      /// pattern it was computed for (rows, stored entries).
+      std::vector<unsigned int> permutation;
+      unsigned int              ordered_rows     = 0;
+      int                       ordered_nonzeros = -1;
     };
   } // namespace Solver
 } // namespace psmpm
