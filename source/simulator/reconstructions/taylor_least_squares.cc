@@ -685,7 +685,6 @@ namespace psmpm
       {
         sort_particles(state);
         mark_interior_cells(state);
-        const auto        &particles  = state.particles;
         auto              &cells      = state.grid->cell_arrays();
         const bool         consistent = !cells.mass.empty();
         const unsigned int n          = n_dofs;
