@@ -30,7 +30,7 @@ namespace psmpm
           pattern.add(row_gid[r], column_gid[columns[k]]);
       std::vector<DynamicSparsityPattern::size_type> cm(n);
       SparsityTools::reorder_Cuthill_McKee(pattern, cm);
-      const auto envelope = [&](const auto &number) {
+      const auto profile = [&](const auto &number) {
         std::size_t sum = 0;
         for (unsigned int r = 0; r < n; ++r)
           {
@@ -49,15 +49,14 @@ namespace psmpm
       const auto reverse = [&](const unsigned int i) {
         return static_cast<unsigned int>(n - 1 - cm[i]);
       };
-      const std::size_t e[3] = {envelope(identity),
-                                envelope(forward),
-                                envelope(reverse)};
+      const std::size_t e[3] = {profile(identity),
+                                profile(forward),
+                                profile(reverse)};
       permutation.resize(n);
       for (unsigned int i = 0; i < n; ++i)
         permutation[i] = e[2] <= e[1] && e[2] < e[0] ? reverse(i) :
                          e[1] < e[0]                 ? forward(i) :
                                                        i;
-      ordered_rows     = n;
       ordered_nonzeros = offsets[n];
     }
 
@@ -85,7 +84,7 @@ namespace psmpm
         column_gid[c] = crs.GCID(c);
       // Any numbering factors correctly; a stale one (another pattern of
       // the same size) would only cost time.
-      if (ordered_rows != n || ordered_nonzeros != offsets[n])
+      if (permutation.size() != n || ordered_nonzeros != offsets[n])
         order(offsets, columns);
       // A = P^T L L^T P: row and column i of A are row and column
       // permutation[i] of the factored matrix.

@@ -72,10 +72,9 @@ namespace psmpm
       mutable std::vector<double> y;
       /// Global index of each local row and column of the matrix.
       std::vector<unsigned int> row_gid, column_gid;
-      /// Row i of the matrix is row permutation[i] of the factor; the
-      /// pattern it was computed for (rows, stored entries).
+      /// Row i of the matrix is row permutation[i] of the factor, for a
+      /// pattern of permutation.size() rows and this many stored entries.
       std::vector<unsigned int> permutation;
-      unsigned int              ordered_rows     = 0;
       int                       ordered_nonzeros = -1;
     };
   } // namespace Solver
