@@ -34,7 +34,6 @@ work directory and prints, per column, every configuration on P1's
 Pareto front with the cheapest Powell-Sabin configuration whose error is
 not larger, and the CPU and wall ratios. Reports; never fails on numbers.
 """
-import json
 import math
 import os
 import shutil
@@ -46,8 +45,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-here = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "build", "psmpm")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "lib"))
+from psmpm_output import ROOT, read_summary  # noqa: E402
+
+binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "psmpm")
 work = sys.argv[2] if len(sys.argv) > 2 else tempfile.mkdtemp(prefix="psmpm-column-cpu.")
 os.makedirs(work, exist_ok=True)
 repeats = int(os.environ.get("REPEATS", "1"))
@@ -62,7 +64,7 @@ BASES = [("linear", "P1"), ("powell-sabin", "Powell-Sabin")]
 
 
 def psmpm(prm, out, settings):
-    command = [binary, os.path.join(here, "prm", prm),
+    command = [binary, os.path.join(ROOT, "prm", prm),
                "--set", "Mass matrix/Type=automatic",
                "--set", "Transfer/Scheme=automatic",
                "--set", "Time/Time step=0",
@@ -72,10 +74,7 @@ def psmpm(prm, out, settings):
     for s in settings:
         command += ["--set", s]
     subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        summary = json.load(open(os.path.join(out, "summary.json")))
-    except (OSError, ValueError):
-        summary = {"status": "no summary"}
+    summary = read_summary(out) or {"status": "no summary"}
     shutil.rmtree(out, ignore_errors=True)  # only summary.json is read
     return summary
 
